@@ -1,0 +1,30 @@
+// Integer hashing for seeding, so that random streams depend on their coordinates only.
+#pragma once
+
+#include <cstdint>
+
+namespace verity {
+
+// The splitmix64 finaliser (Steele, Lea and Flood 2014, "Fast Splittable Pseudorandom
+// Number Generators"): a bijective 64-bit mix.
+inline uint64_t mix64(uint64_t x) {
+  x ^= x >> 30;
+  x *= 0xbf58476d1ce4e5b9ull;
+  x ^= x >> 27;
+  x *= 0x94d049bb133111ebull;
+  x ^= x >> 31;
+  return x;
+}
+
+template <typename... Rest>
+uint64_t hashValues(uint64_t first, Rest... rest) {
+  uint64_t h = mix64(first + 0x9e3779b97f4a7c15ull);
+  ((h = mix64(h ^ (static_cast<uint64_t>(rest) + 0x9e3779b97f4a7c15ull))), ...);
+  return h;
+}
+
+// A pseudo-random permutation of [0, n), keyed by `key`: a 4-round Feistel network on the
+// smallest power-of-four domain covering n, with cycle walking back into [0, n).
+uint32_t permuteIndex(uint32_t i, uint32_t n, uint64_t key);
+
+}  // namespace verity

@@ -1,0 +1,35 @@
+// Sample generators. A sampler is positioned at one (pixel, sample index) before use, and
+// every value it returns is a function of (seed, pixel, sample index, dimension) alone, so
+// that renders do not depend on the order or the thread in which pixels are processed.
+#pragma once
+
+#include <memory>
+
+#include "core/math.h"
+
+namespace verity {
+
+class JsonNode;
+
+class Sampler {
+ public:
+  virtual ~Sampler() = default;
+  // Starts sample `index` (of samplesPerPixel()) of `pixel`.
+  virtual void startPixelSample(const Point2i& pixel, int index) = 0;
+  virtual float next1D() = 0;
+  virtual Point2f next2D() = 0;
+  virtual std::unique_ptr<Sampler> clone() const = 0;
+  int samplesPerPixel() const { return spp_; }
+  void setSamplesPerPixel(int spp) { spp_ = spp; }
+  void setSeed(uint64_t seed) { seed_ = seed; }
+  uint64_t seed() const { return seed_; }
+
+ protected:
+  int spp_ = 1;
+  uint64_t seed_ = 0;
+};
+
+// Reads the scene's "sampler" object (types independent and stratified).
+std::unique_ptr<Sampler> makeSampler(const JsonNode* node);
+
+}  // namespace verity

@@ -1,0 +1,215 @@
+#include "scene/json_node.h"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+namespace verity {
+
+namespace {
+std::string typeName(const nlohmann::json& j) {
+  if (j.is_number()) return "a number";
+  if (j.is_string()) return "a string";
+  if (j.is_array()) return "an array";
+  if (j.is_object()) return "an object";
+  if (j.is_boolean()) return "a boolean";
+  return "null";
+}
+
+// Line and column (both from 1) of a byte offset.
+std::pair<size_t, size_t> lineColumn(const std::string& text, size_t offset) {
+  size_t line = 1, column = 1;
+  for (size_t i = 0; i < std::min(offset, text.size()); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return {line, column};
+}
+}  // namespace
+
+bool Range::contains(float v) const {
+  if (!std::isfinite(v)) return false;
+  if (loOpen ? v <= lo : v < lo) return false;
+  if (hiOpen ? v >= hi : v > hi) return false;
+  return true;
+}
+
+std::string Range::describe() const {
+  if (lo == -kInfinity && hi == kInfinity) return "a finite number";
+  if (hi == kInfinity) return fmt::format("a number {} {}", loOpen ? ">" : ">=", lo);
+  if (lo == -kInfinity) return fmt::format("a number {} {}", hiOpen ? "<" : "<=", hi);
+  return fmt::format("a number in {}{}, {}{}", loOpen ? "(" : "[", lo, hi, hiOpen ? ")" : "]");
+}
+
+JsonNode::JsonNode(std::shared_ptr<const nlohmann::json> root, const nlohmann::json* value,
+                   std::string path, std::shared_ptr<const Source> source)
+    : root_(std::move(root)), value_(value), path_(std::move(path)), source_(std::move(source)) {}
+
+JsonNode JsonNode::load(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw VerityError(file.string(), "", "cannot open the scene file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return parse(buffer.str(), file);
+}
+
+JsonNode JsonNode::parse(const std::string& text, const std::filesystem::path& file) {
+  auto source = std::make_shared<Source>();
+  source->file = file;
+  std::shared_ptr<nlohmann::json> root;
+  try {
+    root = std::make_shared<nlohmann::json>(nlohmann::json::parse(text));
+  } catch (const nlohmann::json::parse_error& e) {
+    // e.byte is one past the offending character.
+    const auto [line, column] = lineColumn(text, e.byte > 0 ? e.byte - 1 : 0);
+    std::string what = e.what();
+    const auto cut = what.find("parse error");
+    if (cut != std::string::npos) what = what.substr(cut);
+    throw VerityError(file.string(), "",
+                      fmt::format("JSON syntax error at line {}, column {}: {}", line, column,
+                                  what));
+  }
+  if (!root->is_object())
+    throw VerityError(file.string(), "", "the scene must be a JSON object, not " + typeName(*root));
+  return JsonNode(root, root.get(), "", source);
+}
+
+std::filesystem::path JsonNode::resolve(const std::string& name) const {
+  const std::filesystem::path p(name);
+  if (p.is_absolute()) return p;
+  return source_->file.parent_path() / p;
+}
+
+const char* JsonNode::resolveKey(Keys keys) const {
+  if (!value_->is_object()) fail("expected an object, found " + typeName(*value_));
+  const char* found = nullptr;
+  for (const char* key : keys) {
+    if (value_->contains(key)) {
+      if (found)
+        fail(fmt::format("both \"{}\" and \"{}\" are given; they are spellings of one key", found,
+                         key));
+      found = key;
+    }
+  }
+  if (found) source_->used[value_].insert(found);
+  return found;
+}
+
+bool JsonNode::has(Keys keys) const { return resolveKey(keys) != nullptr; }
+
+std::optional<JsonNode> JsonNode::find(Keys keys) const {
+  const char* key = resolveKey(keys);
+  if (!key) return std::nullopt;
+  return JsonNode(root_, &(*value_)[key], path_.empty() ? key : path_ + "." + key, source_);
+}
+
+JsonNode JsonNode::operator[](Keys keys) const {
+  auto node = find(keys);
+  if (!node) fail(fmt::format("missing required key \"{}\"", *keys.begin()));
+  return *node;
+}
+
+JsonNode JsonNode::operator[](size_t index) const {
+  if (!value_->is_array()) fail("expected an array, found " + typeName(*value_));
+  if (index >= value_->size())
+    fail(fmt::format("expected at least {} entries, found {}", index + 1, value_->size()));
+  return JsonNode(root_, &(*value_)[index], fmt::format("{}[{}]", path_, index), source_);
+}
+
+float JsonNode::asFloat(Range range) const {
+  if (!value_->is_number()) fail("expected a number, found " + typeName(*value_));
+  const double v = value_->get<double>();
+  if (!range.contains(static_cast<float>(v)))
+    fail(fmt::format("expected {}, found {}", range.describe(), value_->dump()));
+  return static_cast<float>(v);
+}
+
+int JsonNode::asInt(int lo, int hi) const {
+  if (!value_->is_number()) fail("expected an integer, found " + typeName(*value_));
+  const double v = value_->get<double>();
+  if (v != std::floor(v)) fail(fmt::format("expected an integer, found {}", value_->dump()));
+  if (v < lo || v > hi)
+    fail(fmt::format("expected an integer in [{}, {}], found {}", lo, hi, value_->dump()));
+  return static_cast<int>(v);
+}
+
+bool JsonNode::asBool() const {
+  if (!value_->is_boolean()) fail("expected true or false, found " + typeName(*value_));
+  return value_->get<bool>();
+}
+
+std::string JsonNode::asString() const {
+  if (!value_->is_string()) fail("expected a string, found " + typeName(*value_));
+  return value_->get<std::string>();
+}
+
+Vector3f JsonNode::asVector3() const {
+  if (value_->is_number()) return Vector3f::Constant(asFloat());
+  if (!value_->is_array() || value_->size() != 3)
+    fail("expected a number or an array of 3 numbers, found " +
+         (value_->is_array() ? fmt::format("an array of {}", value_->size()) : typeName(*value_)));
+  return {(*this)[0].asFloat(), (*this)[1].asFloat(), (*this)[2].asFloat()};
+}
+
+Vector2i JsonNode::asVector2i(int lo, int hi) const {
+  if (!value_->is_array() || value_->size() != 2)
+    fail("expected an array of 2 integers, found " +
+         (value_->is_array() ? fmt::format("an array of {}", value_->size()) : typeName(*value_)));
+  return {(*this)[0].asInt(lo, hi), (*this)[1].asInt(lo, hi)};
+}
+
+float JsonNode::getFloat(Keys keys, float def, Range range) const {
+  auto node = find(keys);
+  return node ? node->asFloat(range) : def;
+}
+
+int JsonNode::getInt(Keys keys, int def, int lo, int hi) const {
+  auto node = find(keys);
+  return node ? node->asInt(lo, hi) : def;
+}
+
+bool JsonNode::getBool(Keys keys, bool def) const {
+  auto node = find(keys);
+  return node ? node->asBool() : def;
+}
+
+std::string JsonNode::getString(Keys keys) const { return (*this)[keys].asString(); }
+
+std::string JsonNode::getString(Keys keys, const std::string& def) const {
+  auto node = find(keys);
+  return node ? node->asString() : def;
+}
+
+Vector3f JsonNode::getVector3(Keys keys, const Vector3f& def) const {
+  auto node = find(keys);
+  return node ? node->asVector3() : def;
+}
+
+std::string JsonNode::type() const {
+  std::string t = (*this)[{"type"}].asString();
+  for (char& c : t) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return t;
+}
+
+void JsonNode::rejectUnknownKeys() const {
+  if (!value_->is_object()) return;
+  const auto& used = source_->used[value_];
+  for (const auto& item : value_->items()) {
+    if (!used.count(item.key())) {
+      const std::string where = path_.empty() ? item.key() : path_ + "." + item.key();
+      throw VerityError(source_->file.string(), where, "unknown key");
+    }
+  }
+}
+
+void JsonNode::fail(const std::string& problem) const {
+  throw VerityError(source_->file.string(), path_.empty() ? "(top level)" : path_, problem);
+}
+
+}  // namespace verity

@@ -1,0 +1,32 @@
+// A bitmap looked up by uv with bilinear filtering and wrapping. 8-bit files are sRGB and
+// converted to linear; Radiance .hdr files are linear already.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "textures/texture.h"
+
+namespace verity {
+
+class ImageTexture : public Texture {
+ public:
+  // Throws VerityError naming `jsonPath` when the file cannot be read.
+  ImageTexture(const std::filesystem::path& file, const std::string& jsonPath);
+  Color3 eval(const TextureQuery& q) const override;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  // Texel (x, y), row 0 at the top of the image.
+  Color3 texel(int x, int y) const;
+
+ private:
+  int width_ = 0, height_ = 0;
+  std::vector<float> rgb_;
+};
+
+// The exact sRGB transfer curve (IEC 61966-2-1).
+float srgbToLinear(float v);
+float linearToSrgb(float v);
+
+}  // namespace verity
