@@ -1,1 +1,25 @@
-int main(){}
+// The `verity` command-line program.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+
+#include "app/render_command.h"
+#include "core/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"Verity: a physically based renderer whose estimators are checked by statistics"};
+  app.require_subcommand(1);
+  verity::addRenderCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const verity::VerityError& e) {
+    fmt::print(stderr, "verity: error: {}\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "verity: error: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,130 @@
+#include "app/render_command.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include "film/image_io.h"
+#include "render/interrupt.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+
+namespace verity {
+
+namespace {
+
+struct RenderArgs {
+  std::string scene;
+  int spp = 0;
+  int threads = 0;
+  uint64_t seed = 0;
+  std::string integrator;
+  int maxBounces = -1;
+  std::string output;
+  bool variance = false;
+  bool explain = false;
+};
+
+std::string lowerExtension(const std::filesystem::path& p) {
+  std::string e = p.extension().string();
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+int run(const RenderArgs& args) {
+  SceneFile file = loadScene(args.scene);
+  IntegratorSettings settings = file.integrator;
+  if (!args.integrator.empty()) {
+    settings.type = canonicalIntegratorType(args.integrator);
+    if (settings.type.empty())
+      throw VerityError("", "--integrator", "unknown integrator type \"" + args.integrator + "\"");
+  }
+  if (args.maxBounces >= 0) settings.maxBounces = args.maxBounces;
+  if (args.explain) {
+    fmt::print("{}", file.scene->summary().explain());
+    fmt::print("integrator: {} (max_bounces {})\n", settings.type, settings.maxBounces);
+    return 0;
+  }
+
+  std::vector<std::filesystem::path> outputs;
+  if (args.output.empty()) {
+    outputs = {file.name + ".exr", file.name + ".png"};
+  } else {
+    const std::string ext = lowerExtension(args.output);
+    if (ext != ".exr" && ext != ".png")
+      throw VerityError("", "-o", "the output must end in .exr or .png: \"" + args.output + "\"");
+    outputs = {args.output};
+  }
+
+  const auto integrator = makeIntegrator(settings);
+  Film film(file.scene->camera().resolution());
+  RenderOptions options;
+  options.samplesPerPixel = args.spp > 0 ? args.spp : file.sampler->samplesPerPixel();
+  options.threads = args.threads;
+  options.seed = args.seed;
+  options.progress = isatty(STDERR_FILENO);
+  InterruptGuard interrupt;
+  options.cancel = &InterruptGuard::flag();
+  file.sampler->setSeed(args.seed);
+
+  const RenderStats stats = render(*file.scene, *integrator, *file.sampler, film, options);
+
+  ImageChannels image = filmChannels(film, args.variance);
+  image.attributes["verity:scene"] = args.scene;
+  image.attributes["verity:integrator"] = settings.type;
+  image.attributes["verity:max_bounces"] = std::to_string(settings.maxBounces);
+  image.attributes["verity:spp"] = std::to_string(stats.passes);
+  image.attributes["verity:seed"] = std::to_string(args.seed);
+  if (stats.interrupted)
+    image.attributes["verity:partial"] =
+        fmt::format("interrupted after {} of {} samples per pixel", stats.passes,
+                    options.samplesPerPixel);
+  for (const auto& out : outputs) {
+    if (lowerExtension(out) == ".exr")
+      writeExr(out, image);
+    else
+      writePng(out, image);
+  }
+
+  const double seconds = std::max(stats.seconds, 1e-9);
+  fmt::print(stderr, "{}: {} spp, {}, {:.2f} s, {:.3g} samples/s, {:.3g} Mrays/s, {} invalid samples{}\n",
+             file.name, stats.passes, settings.type, stats.seconds, stats.samples / seconds,
+             stats.rays / seconds / 1e6, stats.invalidSamples,
+             stats.invalidSamples ? " (excluded from the average)" : "");
+  if (stats.tracedNoRays)
+    fmt::print(stderr, "the scene has no emitter and a black background: the image is black and "
+                       "no ray was traced\n");
+  for (const auto& out : outputs) fmt::print(stderr, "wrote {}\n", out.string());
+  if (stats.interrupted) {
+    fmt::print(stderr,
+               "interrupted: the image is PARTIAL, {} of {} samples per pixel (every pixel has "
+               "the same count)\n",
+               stats.passes, options.samplesPerPixel);
+    return 130;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app) {
+  auto args = std::make_shared<RenderArgs>();
+  CLI::App* cmd = app.add_subcommand("render", "Render a DIRT-format JSON scene");
+  cmd->add_option("scene", args->scene, "Scene file (.json)")->required();
+  cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")->check(CLI::PositiveNumber);
+  cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--seed", args->seed, "Seed of the render's random numbers");
+  cmd->add_option("--integrator", args->integrator,
+                  "normals, ao, path_tracer_mats, path_tracer_nee or path_tracer_mis");
+  cmd->add_option("--max-bounces", args->maxBounces,
+                  "Maximum scattering events per path (0: emitters seen directly)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("-o,--output", args->output,
+                  "Output .exr or .png (default: <scene name>.exr and .png here)");
+  cmd->add_flag("--variance", args->variance,
+                "Add variance.R/G/B (per-sample variance) and samples channels to the EXR");
+  cmd->add_flag("--explain", args->explain,
+                "Print what the scene calls for (emitters, lobes, textures, strategies) and exit");
+  cmd->callback([args] { throw CLI::RuntimeError(run(*args)); });
+}
+
+}  // namespace verity

@@ -1,0 +1,53 @@
+#include "film/film.h"
+
+#include <numeric>
+
+namespace verity {
+
+Film::Film(const Vector2i& resolution)
+    : resolution_(resolution),
+      sum_(size_t(resolution.x()) * resolution.y(), Eigen::Array3d::Zero()),
+      sumSquares_(sum_.size(), Eigen::Array3d::Zero()),
+      count_(sum_.size(), 0),
+      invalid_(sum_.size(), 0) {}
+
+bool Film::addSample(int x, int y, const Color3& value) {
+  const size_t i = index(x, y);
+  if (!value.allFinite()) {
+    ++invalid_[i];
+    return false;
+  }
+  const Eigen::Array3d v = value.cast<double>();
+  sum_[i] += v;
+  sumSquares_[i] += v * v;
+  ++count_[i];
+  return true;
+}
+
+void Film::addZeroSamples(uint32_t n) {
+  for (auto& c : count_) c += n;
+}
+
+Color3 Film::mean(int x, int y) const {
+  const size_t i = index(x, y);
+  if (count_[i] == 0) return Color3::Zero();
+  return (sum_[i] / count_[i]).cast<float>();
+}
+
+Color3 Film::sampleVariance(int x, int y) const {
+  const size_t i = index(x, y);
+  const double n = count_[i];
+  if (n < 2) return Color3::Zero();
+  const Eigen::Array3d m = sum_[i] / n;
+  return ((sumSquares_[i] - n * m * m) / (n - 1)).max(0.0).cast<float>();
+}
+
+uint64_t Film::invalidSamples() const {
+  return std::accumulate(invalid_.begin(), invalid_.end(), uint64_t(0));
+}
+
+uint64_t Film::validSamples() const {
+  return std::accumulate(count_.begin(), count_.end(), uint64_t(0));
+}
+
+}  // namespace verity

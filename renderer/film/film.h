@@ -1,0 +1,40 @@
+// Per-pixel accumulation of samples in double precision: sum, sum of squares and count, so
+// that the mean and its variance can be written. Non-finite samples are counted and left
+// out, never averaged in.
+#pragma once
+
+#include <vector>
+
+#include "core/math.h"
+
+namespace verity {
+
+class Film {
+ public:
+  explicit Film(const Vector2i& resolution);
+
+  // Adds one sample of pixel (x, y); returns false (and counts it) if it is NaN or Inf.
+  bool addSample(int x, int y, const Color3& value);
+  // Counts `n` zero-valued samples in every pixel (renders that need no ray).
+  void addZeroSamples(uint32_t n);
+
+  const Vector2i& resolution() const { return resolution_; }
+  int width() const { return resolution_.x(); }
+  int height() const { return resolution_.y(); }
+  uint32_t count(int x, int y) const { return count_[index(x, y)]; }
+  // Mean of the valid samples (zero where there are none).
+  Color3 mean(int x, int y) const;
+  // Unbiased sample variance of one sample, per channel (zero below two samples).
+  Color3 sampleVariance(int x, int y) const;
+  uint64_t invalidSamples() const;
+  uint64_t validSamples() const;
+
+ private:
+  size_t index(int x, int y) const { return size_t(y) * resolution_.x() + x; }
+
+  Vector2i resolution_;
+  std::vector<Eigen::Array3d> sum_, sumSquares_;
+  std::vector<uint32_t> count_, invalid_;
+};
+
+}  // namespace verity

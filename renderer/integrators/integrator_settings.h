@@ -1,0 +1,28 @@
+// The integrator a render uses and its parameters, from the scene file and the command line.
+// max_bounces counts scattering events: a path with k edges from the camera to an emitter
+// has k − 1 bounces, so 0 shows emitters seen directly and 1 adds direct lighting. Every
+// integrator, BDPT included, uses this meaning.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "integrators/integrator.h"
+#include "scene/json_node.h"
+
+namespace verity {
+
+struct IntegratorSettings {
+  std::string type = "path_tracer_mats";
+  int maxBounces = 64;
+  float misPower = 1;            // 1: balance heuristic, 2: power heuristic
+  float aoDistance = kInfinity;  // occlusion radius for "ao"
+};
+
+// Canonical name of an integrator type in any accepted spelling, or "" when unknown.
+std::string canonicalIntegratorType(const std::string& type);
+// Reads the scene's "integrator" object (null: the defaults).
+IntegratorSettings parseIntegratorSettings(const JsonNode* node);
+std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& settings);
+
+}  // namespace verity

@@ -1,0 +1,101 @@
+#include "integrators/path_tracer.h"
+
+namespace verity {
+
+namespace {
+// Paths longer than this many bounces continue with probability tied to their throughput.
+constexpr int kRouletteDepth = 3;
+}  // namespace
+
+float PathTracer::misWeight(float pdf, float other) const {
+  if (misPower_ == 1) return pdf / (pdf + other);
+  const float a = std::pow(pdf, misPower_), b = std::pow(other, misPower_);
+  return a / (a + b);
+}
+
+float PathTracer::emissionWeight(bool countedByLightSampling, float bsdfPdf, float lightPdf) const {
+  if (!countedByLightSampling) return 1;
+  switch (strategy_) {
+    case Strategy::Materials: return 1;
+    case Strategy::NextEvent: return 0;
+    case Strategy::Mis: return lightPdf > 0 ? misWeight(bsdfPdf, lightPdf) : 1;
+  }
+  return 1;
+}
+
+Color3 PathTracer::sampleLight(const Scene& scene, Sampler& sampler, const SurfaceInteraction& si,
+                               const Vector3f& wi, PathStats& stats) const {
+  float pmf = 0;
+  const Light* light = scene.sampleLight(sampler.next1D(), &pmf);
+  const Point2f u = sampler.next2D();
+  if (!light || !(pmf > 0)) return Color3::Zero();
+  const auto ls = light->sampleLi(si.p, u);
+  if (!ls) return Color3::Zero();
+  const Vector3f wo = si.toLocal(ls->wi);
+  const TextureQuery q = si.textureQuery();
+  const Color3 f = si.material->eval(q, wi, wo, TransportMode::Radiance) * std::fabs(wo.z());
+  if (isBlack(f)) return Color3::Zero();
+  const Ray shadow = ls->atInfinity ? si.spawnRay(ls->wi) : si.spawnRayTo(ls->p, ls->n);
+  ++stats.rays;
+  if (scene.occluded(shadow)) return Color3::Zero();
+  const float lightPdf = pmf * ls->pdf;
+  const float w = strategy_ == Strategy::Mis ? misWeight(lightPdf, si.material->pdf(q, wi, wo)) : 1;
+  return f * ls->radiance * (w / lightPdf);
+}
+
+Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay,
+                      PathStats& stats) const {
+  Color3 L = Color3::Zero(), beta = Color3::Ones();
+  Ray ray = cameraRay;
+  // Whether emission reached by the current ray could also have been found by sampling a
+  // light at the previous vertex (false for camera rays and after delta bounces).
+  bool lightSampledBefore = false;
+  float bsdfPdf = 0;
+  Point3f previous = ray.o;
+  const bool samplesLights = strategy_ != Strategy::Materials;
+
+  for (int bounce = 0;; ++bounce) {
+    SurfaceInteraction si;
+    ++stats.rays;
+    if (!scene.intersect(ray, si)) {
+      if (const EnvironmentLight* bg = scene.background()) {
+        const float lightPdf = lightSampledBefore ? scene.lightPmf(bg) * bg->pdfLi(ray.d) : 0;
+        L += beta * bg->radiance(ray.d) * emissionWeight(lightSampledBefore, bsdfPdf, lightPdf);
+      }
+      break;
+    }
+    if (si.light) {
+      const Color3 Le = si.light->radiance(si.ng, -ray.d);
+      if (!isBlack(Le)) {
+        const float lightPdf = lightSampledBefore ? scene.lightPmf(si.light) *
+                                                        si.light->pdfLi(previous, si.p, si.ng)
+                                                  : 0;
+        L += beta * Le * emissionWeight(lightSampledBefore, bsdfPdf, lightPdf);
+      }
+    }
+    if (bounce >= maxBounces_ || si.material->lobes() == kNoLobe) break;
+
+    const Vector3f wi = si.toLocal(-ray.d);
+    const bool canSampleLights = samplesLights && si.material->hasNonDeltaLobe();
+    if (canSampleLights) L += beta * sampleLight(scene, sampler, si, wi, stats);
+
+    const float uLobe = sampler.next1D();
+    const auto bs =
+        si.material->sample(si.textureQuery(), wi, uLobe, sampler.next2D(), TransportMode::Radiance);
+    if (!bs) break;
+    beta *= bs->weight;
+    lightSampledBefore = canSampleLights && !bs->isDelta();
+    bsdfPdf = bs->pdf;
+    previous = si.p;
+    ray = si.spawnRay(si.toWorld(bs->wo));
+
+    if (bounce + 1 >= kRouletteDepth) {
+      const float survive = std::min(1.0f, maxComponent(beta));
+      if (!(survive > 0) || sampler.next1D() >= std::max(survive, 0.05f)) break;
+      beta /= std::max(survive, 0.05f);
+    }
+  }
+  return L;
+}
+
+}  // namespace verity

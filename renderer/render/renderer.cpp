@@ -1,0 +1,83 @@
+#include "render/renderer.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <chrono>
+
+#include "render/progress.h"
+
+namespace verity {
+
+namespace {
+struct Tile {
+  int x0, y0, x1, y1;
+};
+
+std::vector<Tile> makeTiles(const Vector2i& res) {
+  std::vector<Tile> tiles;
+  for (int y = 0; y < res.y(); y += kTileSize)
+    for (int x = 0; x < res.x(); x += kTileSize)
+      tiles.push_back({x, y, std::min(x + kTileSize, res.x()), std::min(y + kTileSize, res.y())});
+  return tiles;
+}
+}  // namespace
+
+RenderStats render(const Scene& scene, const Integrator& integrator, const Sampler& prototype,
+                   Film& film, const RenderOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  RenderStats stats;
+  const int spp = options.samplesPerPixel;
+  if (integrator.needsEmitters() && !scene.summary().hasEmitters()) {
+    // Nothing can carry light: the image is exactly black.
+    film.addZeroSamples(static_cast<uint32_t>(spp));
+    stats.passes = spp;
+    stats.samples = uint64_t(spp) * film.width() * film.height();
+    stats.tracedNoRays = true;
+    return stats;
+  }
+
+  const std::vector<Tile> tiles = makeTiles(film.resolution());
+  std::vector<PathStats> tileStats(tiles.size());
+  std::vector<uint64_t> tileInvalid(tiles.size(), 0);
+  const Camera& camera = scene.camera();
+  Progress progress(uint64_t(spp) * tiles.size(), options.progress);
+  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+
+  for (int pass = 0; pass < spp; ++pass) {
+    if (options.cancel && options.cancel->load()) {
+      stats.interrupted = true;
+      break;
+    }
+    arena.execute([&] {
+      tbb::parallel_for(size_t(0), tiles.size(), [&](size_t t) {
+        const Tile& tile = tiles[t];
+        auto sampler = prototype.clone();
+        sampler->setSamplesPerPixel(spp);
+        for (int y = tile.y0; y < tile.y1; ++y) {
+          for (int x = tile.x0; x < tile.x1; ++x) {
+            sampler->startPixelSample(Point2i(x, y), pass);
+            const Point2f filmPosition = Point2f(x, y) + sampler->next2D();
+            const Ray ray = camera.generateRay(filmPosition, sampler->next2D());
+            const Color3 L = integrator.Li(scene, *sampler, ray, tileStats[t]);
+            // Tiles own disjoint pixels, so concurrent tiles never touch the same entry.
+            if (!film.addSample(x, y, L)) ++tileInvalid[t];
+          }
+        }
+        progress.advance(1);
+      });
+    });
+    stats.passes = pass + 1;
+  }
+  progress.finish();
+
+  for (size_t t = 0; t < tiles.size(); ++t) {
+    stats.rays += tileStats[t].rays;
+    stats.invalidSamples += tileInvalid[t];
+  }
+  stats.samples = uint64_t(stats.passes) * film.width() * film.height();
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return stats;
+}
+
+}  // namespace verity

@@ -1,0 +1,27 @@
+// Reads a DIRT-format JSON scene (shared/docs/scene-format.md) into a Scene and the render
+// settings the file asks for.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "integrators/integrator_settings.h"
+#include "sampling/sampler.h"
+#include "scene/scene.h"
+
+namespace verity {
+
+struct SceneFile {
+  std::string name;  // the file name without its extension
+  std::unique_ptr<Scene> scene;
+  std::unique_ptr<Sampler> sampler;  // samplesPerPixel() is the file's sample count
+  IntegratorSettings integrator;
+};
+
+// Throws VerityError naming the file, the JSON path and the problem.
+SceneFile loadScene(const std::filesystem::path& file);
+// The same for scene text, as if it were the file `file` (relative paths resolve against it).
+SceneFile loadSceneText(const std::string& text, const std::filesystem::path& file);
+
+}  // namespace verity

@@ -1,0 +1,86 @@
+#include "scene/transform_parser.h"
+
+namespace verity {
+
+namespace {
+Matrix4f lookAt(const Vector3f& from, const Vector3f& at, const Vector3f& up, const JsonNode& node) {
+  const Vector3f dir = at - from;
+  if (!(dir.norm() > 0)) node.fail("\"from\" and \"at\" are the same point");
+  const Vector3f z = -dir.normalized();  // the camera looks down −z
+  const Vector3f xRaw = up.cross(z);
+  if (!(xRaw.norm() > 1e-12f)) node.fail("\"up\" is parallel to the viewing direction");
+  const Vector3f x = xRaw.normalized();
+  const Vector3f y = z.cross(x);
+  Matrix4f m = Matrix4f::Identity();
+  m.block<3, 1>(0, 0) = x;
+  m.block<3, 1>(0, 1) = y;
+  m.block<3, 1>(0, 2) = z;
+  m.block<3, 1>(0, 3) = from;
+  return m;
+}
+
+Matrix4f parseOne(const JsonNode& node) {
+  if (!node.isObject()) node.fail("expected a transform object");
+  Matrix4f m = Matrix4f::Identity();
+  int forms = 0;
+  if (node.has({"from"}) || node.has({"at", "to"}) || node.has({"up"})) {
+    ++forms;
+    m = lookAt(node.getVector3({"from"}, Vector3f(0, 0, 1)), node.getVector3({"at", "to"}, Vector3f::Zero()),
+               node.getVector3({"up"}, Vector3f::UnitY()), node);
+  }
+  if (node.has({"o"}) || node.has({"x"}) || node.has({"y"}) || node.has({"z"})) {
+    ++forms;
+    // Missing axes default to the identity's.
+    m.block<3, 1>(0, 0) = node.getVector3({"x"}, Vector3f::UnitX());
+    m.block<3, 1>(0, 1) = node.getVector3({"y"}, Vector3f::UnitY());
+    m.block<3, 1>(0, 2) = node.getVector3({"z"}, Vector3f::UnitZ());
+    m.block<3, 1>(0, 3) = node.getVector3({"o"}, Vector3f::Zero());
+  }
+  if (node.has({"translate"})) {
+    ++forms;
+    m.block<3, 1>(0, 3) = node.getVector3({"translate"}, Vector3f::Zero());
+  }
+  if (node.has({"scale"})) {
+    ++forms;
+    const Vector3f s = node.getVector3({"scale"}, Vector3f::Ones());
+    if ((s.array() == 0).any()) node[{"scale"}].fail("a scale of zero makes the transform singular");
+    m.topLeftCorner<3, 3>() = s.asDiagonal();
+  }
+  if (node.has({"axis"}) || node.has({"angle"})) {
+    ++forms;
+    const Vector3f axis = node[{"axis"}].asVector3();
+    const float angle = node[{"angle"}].asFloat();
+    if (!(axis.norm() > 0)) node[{"axis"}].fail("the rotation axis must not be zero");
+    m.topLeftCorner<3, 3>() = Eigen::AngleAxisf(degToRad(angle), axis.normalized()).toRotationMatrix();
+  }
+  if (node.has({"matrix"})) {
+    ++forms;
+    const JsonNode mat = node[{"matrix"}];
+    if (!mat.isArray() || mat.size() != 16) mat.fail("expected an array of 16 numbers (row-major)");
+    for (int i = 0; i < 16; ++i) m(i / 4, i % 4) = mat[i].asFloat();
+  }
+  if (forms == 0) node.fail("a transform needs one of from/at/up, o/x/y/z, translate, scale, axis/angle or matrix");
+  if (forms > 1) node.fail("a transform object must have exactly one form; use an array to combine them");
+  node.rejectUnknownKeys();
+  return m;
+}
+}  // namespace
+
+Transform parseTransform(const JsonNode& node) {
+  Matrix4f m = Matrix4f::Identity();
+  if (node.isArray()) {
+    for (size_t i = 0; i < node.size(); ++i) m = parseOne(node[i]) * m;
+  } else {
+    m = parseOne(node);
+  }
+  Transform t(m);
+  if (!t.isInvertible()) node.fail("the transform is singular (not invertible)");
+  return t;
+}
+
+Transform parseOptionalTransform(const JsonNode& parent) {
+  auto node = parent.find({"transform"});
+  return node ? parseTransform(*node) : Transform();
+}
+
+}  // namespace verity

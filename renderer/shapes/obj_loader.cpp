@@ -1,0 +1,69 @@
+#include "shapes/obj_loader.h"
+
+#include <tiny_obj_loader.h>
+
+#include <map>
+#include <tuple>
+
+#include "core/error.h"
+
+namespace verity {
+
+MeshData loadObj(const std::filesystem::path& file, const Transform& toWorld,
+                 const std::string& jsonPath) {
+  const std::string name = file.string();
+  if (!std::filesystem::is_regular_file(file))
+    throw VerityError("", jsonPath, "mesh file \"" + name + "\" does not exist");
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = true;
+  config.vertex_color = false;
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromFile(name, config)) {
+    std::string message = reader.Error();
+    while (!message.empty() && message.back() == '\n') message.pop_back();
+    throw VerityError("", jsonPath, "cannot read mesh \"" + name + "\": " + message);
+  }
+  const auto& attrib = reader.GetAttrib();
+  MeshData mesh;
+  std::map<std::tuple<int, int, int>, uint32_t> corners;
+  bool hasNormals = !attrib.normals.empty(), hasUvs = !attrib.texcoords.empty();
+  const size_t nv = attrib.vertices.size() / 3, nn = attrib.normals.size() / 3,
+               nt = attrib.texcoords.size() / 2;
+  for (const auto& shape : reader.GetShapes()) {
+    for (const auto& idx : shape.mesh.indices) {
+      if (idx.vertex_index < 0 || size_t(idx.vertex_index) >= nv)
+        throw VerityError("", jsonPath, "mesh \"" + name + "\" has a face with a vertex index out of range");
+      hasNormals = hasNormals && idx.normal_index >= 0 && size_t(idx.normal_index) < nn;
+      hasUvs = hasUvs && idx.texcoord_index >= 0 && size_t(idx.texcoord_index) < nt;
+    }
+  }
+  for (const auto& shape : reader.GetShapes()) {
+    for (const auto& idx : shape.mesh.indices) {
+      const auto key = std::make_tuple(idx.vertex_index, hasNormals ? idx.normal_index : -1,
+                                       hasUvs ? idx.texcoord_index : -1);
+      auto [it, inserted] = corners.emplace(key, static_cast<uint32_t>(mesh.positions.size()));
+      if (inserted) {
+        const float* v = &attrib.vertices[3 * idx.vertex_index];
+        mesh.positions.push_back(toWorld.point(Point3f(v[0], v[1], v[2])));
+        if (hasNormals) {
+          const float* n = &attrib.normals[3 * idx.normal_index];
+          Normal3f wn = toWorld.normal(Normal3f(n[0], n[1], n[2]));
+          const float len = wn.norm();
+          mesh.normals.push_back(len > 0 && std::isfinite(len) ? Normal3f(wn / len) : Normal3f::UnitZ());
+        }
+        if (hasUvs) {
+          const float* t = &attrib.texcoords[2 * idx.texcoord_index];
+          mesh.uvs.emplace_back(t[0], t[1]);
+        }
+      }
+      mesh.indices.push_back(it->second);
+    }
+  }
+  if (mesh.indices.empty()) throw VerityError("", jsonPath, "mesh \"" + name + "\" has no faces");
+  for (const Point3f& p : mesh.positions)
+    if (!p.allFinite())
+      throw VerityError("", jsonPath, "mesh \"" + name + "\" has a non-finite vertex position");
+  return mesh;
+}
+
+}  // namespace verity

@@ -1,0 +1,29 @@
+// A parallelogram: the transformed square [-w/2, w/2] × [-h/2, h/2] of the local xy-plane,
+// front side +z. Embree's quad primitive.
+#pragma once
+
+#include "core/transform.h"
+#include "shapes/shape.h"
+
+namespace verity {
+
+class Quad : public Shape {
+ public:
+  Quad(const Transform& toWorld, const Vector2f& size);
+
+  unsigned attach(RTCDevice device, RTCScene scene) const override;
+  void completeHit(const Ray& ray, const RTCHit& hit, float t,
+                   SurfaceInteraction& si) const override;
+  Bounds3f bounds() const override;
+  float area() const override { return area_; }
+  ShapeSample sampleArea(const Point2f& u) const override;
+  size_t primitiveCount() const override { return 1; }
+
+ private:
+  Point3f corner_;     // local (-w/2, -h/2)
+  Vector3f edgeU_, edgeV_;
+  Normal3f normal_;
+  float area_;
+};
+
+}  // namespace verity

@@ -1,0 +1,59 @@
+// Geometry: registers itself with Embree, completes hits into surface interactions, and
+// samples points on itself (for area lights).
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <optional>
+
+#include "scene/interaction.h"
+
+namespace verity {
+
+struct ShapeSample {
+  Point3f p = Point3f::Zero();
+  Normal3f n = Normal3f::UnitZ();  // geometric normal on the front side
+  float pdf = 0;                   // per area, or per solid angle at the reference point
+};
+
+struct Bounds3f {
+  Point3f lo = Point3f::Constant(kInfinity), hi = Point3f::Constant(-kInfinity);
+  void expand(const Point3f& p) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  void expand(const Bounds3f& b) {
+    lo = lo.cwiseMin(b.lo);
+    hi = hi.cwiseMax(b.hi);
+  }
+  bool empty() const { return (lo.array() > hi.array()).any(); }
+};
+
+class Shape {
+ public:
+  virtual ~Shape() = default;
+
+  // Adds the shape's Embree geometry to `scene`; returns its geometry id.
+  virtual unsigned attach(RTCDevice device, RTCScene scene) const = 0;
+  // Fills the interaction from Embree's hit record (primitive, u, v, distance).
+  virtual void completeHit(const Ray& ray, const RTCHit& hit, float t,
+                           SurfaceInteraction& si) const = 0;
+  virtual Bounds3f bounds() const = 0;
+  virtual float area() const = 0;
+  // A point uniform by area; pdf per area.
+  virtual ShapeSample sampleArea(const Point2f& u) const = 0;
+  // A point as seen from `ref`; pdf per solid angle at ref. The default converts an area
+  // sample; shapes with a better strategy (spheres: the visible cone) override both.
+  virtual std::optional<ShapeSample> sampleSolidAngle(const Point3f& ref, const Point2f& u) const;
+  virtual float pdfSolidAngle(const Point3f& ref, const Point3f& p, const Normal3f& n) const;
+  // Number of primitives (for statistics).
+  virtual size_t primitiveCount() const = 0;
+
+  const Material* material = nullptr;
+  const AreaLight* light = nullptr;
+};
+
+// Converts an area density at p (normal n) to a solid-angle density at ref.
+float areaToSolidAngle(float pdfArea, const Point3f& ref, const Point3f& p, const Normal3f& n);
+
+}  // namespace verity

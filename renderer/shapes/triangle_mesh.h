@@ -1,0 +1,38 @@
+// Triangles with optional per-vertex normals and uvs, in world space (Embree triangles).
+#pragma once
+
+#include <vector>
+
+#include "sampling/distribution.h"
+#include "shapes/shape.h"
+
+namespace verity {
+
+struct MeshData {
+  std::vector<Point3f> positions;
+  std::vector<Normal3f> normals;  // empty, or one per position
+  std::vector<Point2f> uvs;       // empty, or one per position
+  std::vector<uint32_t> indices;  // three per triangle
+};
+
+class TriangleMesh : public Shape {
+ public:
+  // Degenerate (zero-area) triangles are kept for intersection but never sampled.
+  explicit TriangleMesh(MeshData data);
+
+  unsigned attach(RTCDevice device, RTCScene scene) const override;
+  void completeHit(const Ray& ray, const RTCHit& hit, float t,
+                   SurfaceInteraction& si) const override;
+  Bounds3f bounds() const override;
+  float area() const override { return static_cast<float>(areas_.total()); }
+  ShapeSample sampleArea(const Point2f& u) const override;
+  size_t primitiveCount() const override { return data_.indices.size() / 3; }
+
+ private:
+  Normal3f faceNormal(size_t tri) const;
+
+  MeshData data_;
+  Distribution1D areas_;
+};
+
+}  // namespace verity
