@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/bench_command.h"
 #include "app/render_command.h"
 #include "core/error.h"
 
@@ -10,6 +11,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Verity: a physically based renderer whose estimators are checked by statistics"};
   app.require_subcommand(1);
   verity::addRenderCommand(app);
+  verity::addBenchCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -75,9 +75,8 @@ int run(const RenderArgs& args) {
   image.attributes["verity:spp"] = std::to_string(stats.passes);
   image.attributes["verity:seed"] = std::to_string(args.seed);
   if (stats.interrupted)
-    image.attributes["verity:partial"] =
-        fmt::format("interrupted after {} of {} samples per pixel", stats.passes,
-                    options.samplesPerPixel);
+    image.attributes["verity:partial"] = fmt::format("interrupted after {} of {} samples per pixel",
+                                                     stats.passes, options.samplesPerPixel);
   for (const auto& out : outputs) {
     if (lowerExtension(out) == ".exr")
       writeExr(out, image);
@@ -86,13 +85,15 @@ int run(const RenderArgs& args) {
   }
 
   const double seconds = std::max(stats.seconds, 1e-9);
-  fmt::print(stderr, "{}: {} spp, {}, {:.2f} s, {:.3g} samples/s, {:.3g} Mrays/s, {} invalid samples{}\n",
+  fmt::print(stderr,
+             "{}: {} spp, {}, {:.2f} s, {:.3g} samples/s, {:.3g} Mrays/s, {} invalid samples{}\n",
              file.name, stats.passes, settings.type, stats.seconds, stats.samples / seconds,
              stats.rays / seconds / 1e6, stats.invalidSamples,
              stats.invalidSamples ? " (excluded from the average)" : "");
   if (stats.tracedNoRays)
-    fmt::print(stderr, "the scene has no emitter and a black background: the image is black and "
-                       "no ray was traced\n");
+    fmt::print(stderr,
+               "the scene has no emitter and a black background: the image is black and "
+               "no ray was traced\n");
   for (const auto& out : outputs) fmt::print(stderr, "wrote {}\n", out.string());
   if (stats.interrupted) {
     fmt::print(stderr,
@@ -110,8 +111,10 @@ void addRenderCommand(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Render a DIRT-format JSON scene");
   cmd->add_option("scene", args->scene, "Scene file (.json)")->required();
-  cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")->check(CLI::PositiveNumber);
-  cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--seed", args->seed, "Seed of the render's random numbers");
   cmd->add_option("--integrator", args->integrator,
                   "normals, ao, path_tracer_mats, path_tracer_nee or path_tracer_mis");

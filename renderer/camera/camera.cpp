@@ -11,7 +11,8 @@ Camera::Camera(const Transform& toWorld, const Vector2i& resolution, float vfovD
       focusDistance_(focusDistance),
       lensRadius_(lensRadius) {
   halfHeight_ = std::tan(degToRad(vfovDegrees) / 2);
-  halfWidth_ = halfHeight_ * static_cast<float>(resolution.x()) / static_cast<float>(resolution.y());
+  halfWidth_ =
+      halfHeight_ * static_cast<float>(resolution.x()) / static_cast<float>(resolution.y());
 }
 
 Ray Camera::generateRay(const Point2f& film, const Point2f& lens) const {

@@ -29,17 +29,33 @@ inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
 // Largest float strictly below one: keeps sample values in [0, 1).
 inline constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 
-inline float safeSqrt(float x) { return std::sqrt(std::max(x, 0.0f)); }
-inline float safeAcos(float x) { return std::acos(std::clamp(x, -1.0f, 1.0f)); }
-inline float sqr(float x) { return x * x; }
-inline float degToRad(float d) { return d * (kPi / 180.0f); }
-inline float lerp(float t, float a, float b) { return (1 - t) * a + t * b; }
+inline float safeSqrt(float x) {
+  return std::sqrt(std::max(x, 0.0f));
+}
+inline float safeAcos(float x) {
+  return std::acos(std::clamp(x, -1.0f, 1.0f));
+}
+inline float sqr(float x) {
+  return x * x;
+}
+inline float degToRad(float d) {
+  return d * (kPi / 180.0f);
+}
+inline float lerp(float t, float a, float b) {
+  return (1 - t) * a + t * b;
+}
 
-inline bool isFinite(const Color3& c) { return c.allFinite(); }
-inline bool isBlack(const Color3& c) { return (c == 0.0f).all(); }
+inline bool isFinite(const Color3& c) {
+  return c.allFinite();
+}
+inline bool isBlack(const Color3& c) {
+  return (c == 0.0f).all();
+}
 inline float luminance(const Color3& c) {
   return 0.212671f * c.x() + 0.715160f * c.y() + 0.072169f * c.z();
 }
-inline float maxComponent(const Color3& c) { return c.maxCoeff(); }
+inline float maxComponent(const Color3& c) {
+  return c.maxCoeff();
+}
 
 }  // namespace verity

@@ -58,8 +58,10 @@ void writeExr(const std::filesystem::path& file, const ImageChannels& image, boo
         frame.insert(name, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(halves.back().data()),
                                       sizeof(half), sizeof(half) * image.width));
       } else {
-        frame.insert(name, Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(plane.data())),
-                                      sizeof(float), sizeof(float) * image.width));
+        frame.insert(
+            name,
+            Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(plane.data())),
+                       sizeof(float), sizeof(float) * image.width));
       }
     }
     Imf::OutputFile out(file.string().c_str(), header);
@@ -84,7 +86,8 @@ ImageChannels readExr(const std::filesystem::path& file) {
       plane.assign(size_t(image.width) * image.height, 0.0f);
       char* base = reinterpret_cast<char*>(plane.data()) -
                    (dw.min.x + size_t(dw.min.y) * image.width) * sizeof(float);
-      frame.insert(it.name(), Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * image.width));
+      frame.insert(it.name(),
+                   Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * image.width));
     }
     for (auto it = header.begin(); it != header.end(); ++it)
       if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))

@@ -23,7 +23,8 @@ struct ImageChannels {
 // variance / samples.
 ImageChannels filmChannels(const Film& film, bool withVariance);
 
-void writeExr(const std::filesystem::path& file, const ImageChannels& image, bool halfFloat = false);
+void writeExr(const std::filesystem::path& file, const ImageChannels& image,
+              bool halfFloat = false);
 ImageChannels readExr(const std::filesystem::path& file);
 // Gain 1, exact sRGB curve, clamp, no tone mapping.
 void writePng(const std::filesystem::path& file, const ImageChannels& image);

@@ -16,9 +16,12 @@ float PathTracer::misWeight(float pdf, float other) const {
 float PathTracer::emissionWeight(bool countedByLightSampling, float bsdfPdf, float lightPdf) const {
   if (!countedByLightSampling) return 1;
   switch (strategy_) {
-    case Strategy::Materials: return 1;
-    case Strategy::NextEvent: return 0;
-    case Strategy::Mis: return lightPdf > 0 ? misWeight(bsdfPdf, lightPdf) : 1;
+    case Strategy::Materials:
+      return 1;
+    case Strategy::NextEvent:
+      return 0;
+    case Strategy::Mis:
+      return lightPdf > 0 ? misWeight(bsdfPdf, lightPdf) : 1;
   }
   return 1;
 }
@@ -67,9 +70,9 @@ Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay
     if (si.light) {
       const Color3 Le = si.light->radiance(si.ng, -ray.d);
       if (!isBlack(Le)) {
-        const float lightPdf = lightSampledBefore ? scene.lightPmf(si.light) *
-                                                        si.light->pdfLi(previous, si.p, si.ng)
-                                                  : 0;
+        const float lightPdf =
+            lightSampledBefore ? scene.lightPmf(si.light) * si.light->pdfLi(previous, si.p, si.ng)
+                               : 0;
         L += beta * Le * emissionWeight(lightSampledBefore, bsdfPdf, lightPdf);
       }
     }
@@ -80,8 +83,8 @@ Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay
     if (canSampleLights) L += beta * sampleLight(scene, sampler, si, wi, stats);
 
     const float uLobe = sampler.next1D();
-    const auto bs =
-        si.material->sample(si.textureQuery(), wi, uLobe, sampler.next2D(), TransportMode::Radiance);
+    const auto bs = si.material->sample(si.textureQuery(), wi, uLobe, sampler.next2D(),
+                                        TransportMode::Radiance);
     if (!bs) break;
     beta *= bs->weight;
     lightSampledBefore = canSampleLights && !bs->isDelta();

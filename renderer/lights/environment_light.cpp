@@ -4,7 +4,8 @@
 
 namespace verity {
 
-EnvironmentLight::EnvironmentLight(const Color3& constant) : constant_(constant), average_(constant) {}
+EnvironmentLight::EnvironmentLight(const Color3& constant)
+    : constant_(constant), average_(constant) {}
 
 EnvironmentLight::EnvironmentLight(std::shared_ptr<const ImageTexture> image)
     : image_(std::move(image)) {

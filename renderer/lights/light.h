@@ -13,7 +13,7 @@ struct LightSample {
   Vector3f wi = Vector3f::UnitZ();   // unit direction from the reference point to the light
   Point3f p = Point3f::Zero();       // the point on the light (unused at infinity)
   Normal3f n = Normal3f::UnitZ();
-  float pdf = 0;                     // per solid angle at the reference point
+  float pdf = 0;  // per solid angle at the reference point
   bool atInfinity = false;
 };
 

@@ -20,8 +20,12 @@ InterruptGuard::InterruptGuard() {
   std::signal(SIGINT, onInterrupt);
 }
 
-InterruptGuard::~InterruptGuard() { std::signal(SIGINT, SIG_DFL); }
+InterruptGuard::~InterruptGuard() {
+  std::signal(SIGINT, SIG_DFL);
+}
 
-const std::atomic<bool>& InterruptGuard::flag() { return interrupted; }
+const std::atomic<bool>& InterruptGuard::flag() {
+  return interrupted;
+}
 
 }  // namespace verity

@@ -1,9 +1,11 @@
 #include "render/renderer.h"
 
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <chrono>
+#include <optional>
 
 #include "render/progress.h"
 
@@ -42,6 +44,14 @@ RenderStats render(const Scene& scene, const Integrator& integrator, const Sampl
   std::vector<uint64_t> tileInvalid(tiles.size(), 0);
   const Camera& camera = scene.camera();
   Progress progress(uint64_t(spp) * tiles.size(), options.progress);
+  // TBB caps its workers at the core count unless told otherwise; an explicit thread count
+  // beyond it (oversubscription, tests of 3 threads on 2 cores) must still get its threads.
+  std::optional<tbb::global_control> allowThreads;
+  if (options.threads > 0)
+    allowThreads.emplace(
+        tbb::global_control::max_allowed_parallelism,
+        std::max<size_t>(options.threads, tbb::global_control::active_value(
+                                              tbb::global_control::max_allowed_parallelism)));
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
 
   for (int pass = 0; pass < spp; ++pass) {

@@ -28,8 +28,8 @@ size_t Distribution1D::sampleDiscrete(float u, float* pmf, float* uRemapped) con
   if (pmf) *pmf = pmf_[i];
   if (uRemapped) {
     const double width = cdf_[i + 1] - cdf_[i];
-    *uRemapped = width > 0 ? std::min(static_cast<float>((u - cdf_[i]) / width), kOneMinusEpsilon)
-                           : 0.0f;
+    *uRemapped =
+        width > 0 ? std::min(static_cast<float>((u - cdf_[i]) / width), kOneMinusEpsilon) : 0.0f;
   }
   return i;
 }
@@ -71,8 +71,8 @@ Point2f Distribution2D::sample(const Point2f& u, float* pdf) const {
 
 float Distribution2D::pdf(const Point2f& p) const {
   if (p.y() < 0 || p.y() >= 1) return 0;
-  const size_t row = std::min(static_cast<size_t>(p.y() * conditional_.size()),
-                              conditional_.size() - 1);
+  const size_t row =
+      std::min(static_cast<size_t>(p.y() * conditional_.size()), conditional_.size() - 1);
   return marginal_.pdfContinuous(p.y()) * conditional_[row].pdfContinuous(p.x());
 }
 

@@ -9,7 +9,9 @@ void IndependentSampler::startPixelSample(const Point2i& pixel, int index) {
   rng_.seed(hashValues(seed_, pixelKey), hashValues(seed_ ^ 0x5bd1e995u, pixelKey, index));
 }
 
-float IndependentSampler::next1D() { return uniformFloat(rng_()); }
+float IndependentSampler::next1D() {
+  return uniformFloat(rng_());
+}
 
 Point2f IndependentSampler::next2D() {
   const float x = next1D();

@@ -10,7 +10,8 @@ std::unique_ptr<Sampler> makeSampler(const JsonNode* node) {
   const std::string type = node->has({"type"}) ? node->type() : "independent";
   if (type == "independent") return std::make_unique<IndependentSampler>();
   if (type == "stratified") return std::make_unique<StratifiedSampler>();
-  (*node)[{"type"}].fail("unsupported sampler type \"" + type + "\" (expected independent or stratified)");
+  (*node)[{"type"}].fail("unsupported sampler type \"" + type +
+                         "\" (expected independent or stratified)");
 }
 
 }  // namespace verity

@@ -9,13 +9,19 @@ namespace verity::warp {
 // (Shirley and Chiu 1997, "A Low Distortion Map Between Disk and Square").
 Point2f squareToUniformDiskPolar(const Point2f& u);
 Point2f squareToUniformDiskConcentric(const Point2f& u);
-inline float squareToUniformDiskPdf(const Point2f& p) { return p.squaredNorm() <= 1 ? kInvPi : 0; }
+inline float squareToUniformDiskPdf(const Point2f& p) {
+  return p.squaredNorm() <= 1 ? kInvPi : 0;
+}
 
 Vector3f squareToUniformSphere(const Point2f& u);
-inline float squareToUniformSpherePdf(const Vector3f&) { return kInv4Pi; }
+inline float squareToUniformSpherePdf(const Vector3f&) {
+  return kInv4Pi;
+}
 
 Vector3f squareToUniformHemisphere(const Point2f& u);
-inline float squareToUniformHemispherePdf(const Vector3f& v) { return v.z() >= 0 ? kInv2Pi : 0; }
+inline float squareToUniformHemispherePdf(const Vector3f& v) {
+  return v.z() >= 0 ? kInv2Pi : 0;
+}
 
 // Density cos θ / π (Malley's method through the concentric disk map).
 Vector3f squareToCosineHemisphere(const Point2f& u);

@@ -20,7 +20,7 @@ struct SurfaceInteraction {
   const Shape* shape = nullptr;
   const Material* material = nullptr;
   const AreaLight* light = nullptr;  // set when the surface emits
-  float sceneScale = 1.0f;          // for ray offsets
+  float sceneScale = 1.0f;           // for ray offsets
 
   TextureQuery textureQuery() const { return {uv, p}; }
   Vector3f toLocal(const Vector3f& v) const { return shading.toLocal(v); }

@@ -71,9 +71,9 @@ JsonNode JsonNode::parse(const std::string& text, const std::filesystem::path& f
     std::string what = e.what();
     const auto cut = what.find("parse error");
     if (cut != std::string::npos) what = what.substr(cut);
-    throw VerityError(file.string(), "",
-                      fmt::format("JSON syntax error at line {}, column {}: {}", line, column,
-                                  what));
+    throw VerityError(
+        file.string(), "",
+        fmt::format("JSON syntax error at line {}, column {}: {}", line, column, what));
   }
   if (!root->is_object())
     throw VerityError(file.string(), "", "the scene must be a JSON object, not " + typeName(*root));
@@ -101,7 +101,9 @@ const char* JsonNode::resolveKey(Keys keys) const {
   return found;
 }
 
-bool JsonNode::has(Keys keys) const { return resolveKey(keys) != nullptr; }
+bool JsonNode::has(Keys keys) const {
+  return resolveKey(keys) != nullptr;
+}
 
 std::optional<JsonNode> JsonNode::find(Keys keys) const {
   const char* key = resolveKey(keys);
@@ -179,7 +181,9 @@ bool JsonNode::getBool(Keys keys, bool def) const {
   return node ? node->asBool() : def;
 }
 
-std::string JsonNode::getString(Keys keys) const { return (*this)[keys].asString(); }
+std::string JsonNode::getString(Keys keys) const {
+  return (*this)[keys].asString();
+}
 
 std::string JsonNode::getString(Keys keys, const std::string& def) const {
   auto node = find(keys);

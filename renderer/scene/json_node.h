@@ -85,8 +85,8 @@ class JsonNode {
     // Keys read so far, per JSON object, shared by every view of the document.
     mutable std::map<const nlohmann::json*, std::set<std::string>> used;
   };
-  JsonNode(std::shared_ptr<const nlohmann::json> root, const nlohmann::json* value, std::string path,
-           std::shared_ptr<const Source> source);
+  JsonNode(std::shared_ptr<const nlohmann::json> root, const nlohmann::json* value,
+           std::string path, std::shared_ptr<const Source> source);
   const char* resolveKey(Keys keys) const;
 
   std::shared_ptr<const nlohmann::json> root_;

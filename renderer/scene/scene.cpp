@@ -10,7 +10,8 @@ namespace verity {
 namespace {
 // Embree calls this from C code: it must not throw. Errors here are bugs, not bad input.
 void embreeError(void*, RTCError code, const char* message) {
-  fmt::print(stderr, "verity: Embree error {}: {}\n", static_cast<int>(code), message ? message : "");
+  fmt::print(stderr, "verity: Embree error {}: {}\n", static_cast<int>(code),
+             message ? message : "");
   std::abort();
 }
 }  // namespace
@@ -72,7 +73,8 @@ void Scene::finalize() {
   for (const auto& shape : shapes_) {
     bounds_.expand(shape->bounds());
     summary_.primitives += shape->primitiveCount();
-    if (auto* light = dynamic_cast<const DiffuseLight*>(shape->material); light && light->isEmitter()) {
+    if (auto* light = dynamic_cast<const DiffuseLight*>(shape->material);
+        light && light->isEmitter()) {
       areaLights_.push_back(std::make_unique<AreaLight>(*shape, light->radiance()));
       shape->light = areaLights_.back().get();
     }

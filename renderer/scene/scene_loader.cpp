@@ -72,7 +72,8 @@ class SurfaceParser {
     if (type == "sphere") {
       const float radius = node.getFloat({"radius"}, 1, Range::positive());
       if (!toWorld.isSimilarity(nullptr))
-        node[{"transform"}].fail("a sphere's transform must scale uniformly (no shear or non-uniform scale)");
+        node[{"transform"}].fail(
+            "a sphere's transform must scale uniformly (no shear or non-uniform scale)");
       shape = std::make_unique<Sphere>(toWorld, radius);
     } else if (type == "quad") {
       Vector2f size(1, 1);
@@ -88,7 +89,8 @@ class SurfaceParser {
     } else if (type == "mesh") {
       const JsonNode file = node[{"filename"}];
       try {
-        shape = std::make_unique<TriangleMesh>(loadObj(node.resolve(file.asString()), toWorld, file.path()));
+        shape = std::make_unique<TriangleMesh>(
+            loadObj(node.resolve(file.asString()), toWorld, file.path()));
       } catch (const VerityError& e) {
         if (!e.file().empty()) throw;
         throw VerityError(node.file().string(), e.jsonPath(), e.problem());
@@ -109,7 +111,8 @@ class SurfaceParser {
     MeshData mesh;
     const JsonNode positions = node[{"positions"}];
     if (!positions.isArray() || positions.size() != 3) positions.fail("expected 3 points");
-    for (size_t i = 0; i < 3; ++i) mesh.positions.push_back(toWorld.point(positions[i].asVector3()));
+    for (size_t i = 0; i < 3; ++i)
+      mesh.positions.push_back(toWorld.point(positions[i].asVector3()));
     if (auto normals = node.find({"normals"})) {
       if (!normals->isArray() || normals->size() != 3) normals->fail("expected 3 normals");
       for (size_t i = 0; i < 3; ++i) {
@@ -188,7 +191,9 @@ SceneFile build(const JsonNode& root, const std::filesystem::path& file) {
 
 }  // namespace
 
-SceneFile loadScene(const std::filesystem::path& file) { return build(JsonNode::load(file), file); }
+SceneFile loadScene(const std::filesystem::path& file) {
+  return build(JsonNode::load(file), file);
+}
 
 SceneFile loadSceneText(const std::string& text, const std::filesystem::path& file) {
   return build(JsonNode::parse(text, file), file);

@@ -3,7 +3,8 @@
 namespace verity {
 
 namespace {
-Matrix4f lookAt(const Vector3f& from, const Vector3f& at, const Vector3f& up, const JsonNode& node) {
+Matrix4f lookAt(const Vector3f& from, const Vector3f& at, const Vector3f& up,
+                const JsonNode& node) {
   const Vector3f dir = at - from;
   if (!(dir.norm() > 0)) node.fail("\"from\" and \"at\" are the same point");
   const Vector3f z = -dir.normalized();  // the camera looks down −z
@@ -25,7 +26,8 @@ Matrix4f parseOne(const JsonNode& node) {
   int forms = 0;
   if (node.has({"from"}) || node.has({"at", "to"}) || node.has({"up"})) {
     ++forms;
-    m = lookAt(node.getVector3({"from"}, Vector3f(0, 0, 1)), node.getVector3({"at", "to"}, Vector3f::Zero()),
+    m = lookAt(node.getVector3({"from"}, Vector3f(0, 0, 1)),
+               node.getVector3({"at", "to"}, Vector3f::Zero()),
                node.getVector3({"up"}, Vector3f::UnitY()), node);
   }
   if (node.has({"o"}) || node.has({"x"}) || node.has({"y"}) || node.has({"z"})) {
@@ -43,7 +45,8 @@ Matrix4f parseOne(const JsonNode& node) {
   if (node.has({"scale"})) {
     ++forms;
     const Vector3f s = node.getVector3({"scale"}, Vector3f::Ones());
-    if ((s.array() == 0).any()) node[{"scale"}].fail("a scale of zero makes the transform singular");
+    if ((s.array() == 0).any())
+      node[{"scale"}].fail("a scale of zero makes the transform singular");
     m.topLeftCorner<3, 3>() = s.asDiagonal();
   }
   if (node.has({"axis"}) || node.has({"angle"})) {
@@ -51,7 +54,8 @@ Matrix4f parseOne(const JsonNode& node) {
     const Vector3f axis = node[{"axis"}].asVector3();
     const float angle = node[{"angle"}].asFloat();
     if (!(axis.norm() > 0)) node[{"axis"}].fail("the rotation axis must not be zero");
-    m.topLeftCorner<3, 3>() = Eigen::AngleAxisf(degToRad(angle), axis.normalized()).toRotationMatrix();
+    m.topLeftCorner<3, 3>() =
+        Eigen::AngleAxisf(degToRad(angle), axis.normalized()).toRotationMatrix();
   }
   if (node.has({"matrix"})) {
     ++forms;
@@ -59,8 +63,11 @@ Matrix4f parseOne(const JsonNode& node) {
     if (!mat.isArray() || mat.size() != 16) mat.fail("expected an array of 16 numbers (row-major)");
     for (int i = 0; i < 16; ++i) m(i / 4, i % 4) = mat[i].asFloat();
   }
-  if (forms == 0) node.fail("a transform needs one of from/at/up, o/x/y/z, translate, scale, axis/angle or matrix");
-  if (forms > 1) node.fail("a transform object must have exactly one form; use an array to combine them");
+  if (forms == 0)
+    node.fail(
+        "a transform needs one of from/at/up, o/x/y/z, translate, scale, axis/angle or matrix");
+  if (forms > 1)
+    node.fail("a transform object must have exactly one form; use an array to combine them");
   node.rejectUnknownKeys();
   return m;
 }

@@ -32,7 +32,8 @@ MeshData loadObj(const std::filesystem::path& file, const Transform& toWorld,
   for (const auto& shape : reader.GetShapes()) {
     for (const auto& idx : shape.mesh.indices) {
       if (idx.vertex_index < 0 || size_t(idx.vertex_index) >= nv)
-        throw VerityError("", jsonPath, "mesh \"" + name + "\" has a face with a vertex index out of range");
+        throw VerityError("", jsonPath,
+                          "mesh \"" + name + "\" has a face with a vertex index out of range");
       hasNormals = hasNormals && idx.normal_index >= 0 && size_t(idx.normal_index) < nn;
       hasUvs = hasUvs && idx.texcoord_index >= 0 && size_t(idx.texcoord_index) < nt;
     }
@@ -49,7 +50,8 @@ MeshData loadObj(const std::filesystem::path& file, const Transform& toWorld,
           const float* n = &attrib.normals[3 * idx.normal_index];
           Normal3f wn = toWorld.normal(Normal3f(n[0], n[1], n[2]));
           const float len = wn.norm();
-          mesh.normals.push_back(len > 0 && std::isfinite(len) ? Normal3f(wn / len) : Normal3f::UnitZ());
+          mesh.normals.push_back(len > 0 && std::isfinite(len) ? Normal3f(wn / len)
+                                                               : Normal3f::UnitZ());
         }
         if (hasUvs) {
           const float* t = &attrib.texcoords[2 * idx.texcoord_index];

@@ -20,7 +20,7 @@ class Quad : public Shape {
   size_t primitiveCount() const override { return 1; }
 
  private:
-  Point3f corner_;     // local (-w/2, -h/2)
+  Point3f corner_;  // local (-w/2, -h/2)
   Vector3f edgeU_, edgeV_;
   Normal3f normal_;
   float area_;

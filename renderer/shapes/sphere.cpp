@@ -14,8 +14,8 @@ Sphere::Sphere(const Transform& toWorld, float radius) {
 
 unsigned Sphere::attach(RTCDevice device, RTCScene scene) const {
   RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-  auto* v = static_cast<float*>(
-      rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
+  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                        RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
   v[0] = center_.x();
   v[1] = center_.y();
   v[2] = center_.z();
@@ -66,8 +66,7 @@ std::optional<ShapeSample> Sphere::sampleSolidAngle(const Point3f& ref, const Po
   const float sinTheta = safeSqrt(1 - z * z);
   const float phi = 2 * kPi * u.y();
   const Frame frame(toCenter / dist);
-  const Vector3f w =
-      frame.toWorld(Vector3f(sinTheta * std::cos(phi), sinTheta * std::sin(phi), z));
+  const Vector3f w = frame.toWorld(Vector3f(sinTheta * std::cos(phi), sinTheta * std::sin(phi), z));
   // Nearest intersection of ref + s·w with the sphere.
   const float b = w.dot(toCenter);
   const float disc = r2 - (toCenter - b * w).squaredNorm();

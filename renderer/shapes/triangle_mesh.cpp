@@ -20,8 +20,8 @@ unsigned TriangleMesh::attach(RTCDevice device, RTCScene scene) const {
   RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
   rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                              data_.positions.data(), 0, sizeof(Point3f), data_.positions.size());
-  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                             data_.indices.data(), 0, 3 * sizeof(uint32_t), primitiveCount());
+  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, data_.indices.data(),
+                             0, 3 * sizeof(uint32_t), primitiveCount());
   rtcCommitGeometry(geom);
   const unsigned id = rtcAttachGeometry(scene, geom);
   rtcReleaseGeometry(geom);

@@ -21,12 +21,16 @@ ImageTexture::ImageTexture(const std::filesystem::path& file, const std::string&
     throw VerityError("", jsonPath, "image file \"" + name + "\" does not exist");
   if (stbi_is_hdr(name.c_str())) {
     float* data = stbi_loadf(name.c_str(), &width_, &height_, &channels, 3);
-    if (!data) throw VerityError("", jsonPath, "cannot decode image \"" + name + "\": " + stbi_failure_reason());
+    if (!data)
+      throw VerityError("", jsonPath,
+                        "cannot decode image \"" + name + "\": " + stbi_failure_reason());
     rgb_.assign(data, data + size_t(width_) * height_ * 3);
     stbi_image_free(data);
   } else {
     unsigned char* data = stbi_load(name.c_str(), &width_, &height_, &channels, 3);
-    if (!data) throw VerityError("", jsonPath, "cannot decode image \"" + name + "\": " + stbi_failure_reason());
+    if (!data)
+      throw VerityError("", jsonPath,
+                        "cannot decode image \"" + name + "\": " + stbi_failure_reason());
     float table[256];
     for (int i = 0; i < 256; ++i) table[i] = srgbToLinear(i / 255.0f);
     rgb_.resize(size_t(width_) * height_ * 3);

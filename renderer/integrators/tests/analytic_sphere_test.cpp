@@ -1,0 +1,87 @@
+// A Lambertian sphere of albedo a under a constant background L, seen from outside: being
+// convex it sees only the background, so its radiance is exactly a·L, and every other pixel
+// sees L. Each integrator must reproduce both to within a bound derived from the samples'
+// own variance.
+#include <gtest/gtest.h>
+#include <tbb/task_arena.h>
+
+#include <boost/math/distributions/normal.hpp>
+
+#include "integrators/integrator_settings.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+
+namespace verity {
+namespace {
+
+constexpr float kAlbedo = 0.6f;
+constexpr float kBackground = 1.5f;
+
+const char* kScene = R"({
+  "camera": {"transform": {"from": [0, 0, 4], "at": [0, 0, 0], "up": [0, 1, 0]}, "vfov": 40,
+             "resolution": [24, 24]},
+  "background": 1.5,
+  "surfaces": [{"type": "sphere", "radius": 1, "material": {"type": "lambertian", "albedo": 0.6}}]
+})";
+
+// Pixels whose whole footprint is on the sphere (1) or off it (0); edge pixels (-1) mix both.
+int coverage(const Camera& camera, const Scene& scene, int x, int y) {
+  int hits = 0;
+  for (int cy = 0; cy <= 1; ++cy)
+    for (int cx = 0; cx <= 1; ++cx) {
+      SurfaceInteraction si;
+      hits += scene.intersect(camera.generateRay(Point2f(x + cx, y + cy), Point2f(0.5f, 0.5f)), si);
+    }
+  return hits == 4 ? 1 : hits == 0 ? 0 : -1;
+}
+
+class AnalyticSphere : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(AnalyticSphere, MatchesAlbedoTimesBackground) {
+  SceneFile file = loadSceneText(kScene, "/tmp/analytic-sphere.json");
+  IntegratorSettings settings = file.integrator;
+  settings.type = GetParam();
+  const auto integrator = makeIntegrator(settings);
+  Film film(file.scene->camera().resolution());
+  RenderOptions options;
+  options.samplesPerPixel = 64;
+  options.seed = 7;
+  file.sampler->setSeed(options.seed);
+  render(*file.scene, *integrator, *file.sampler, film, options);
+
+  // Pool pixels per region: mean of all samples and its standard error from the
+  // samples' variance. Two regions × three channels × four integrators: a two-sided
+  // z-test at family-wise level 1% with a Bonferroni correction over 24 tests.
+  const double z = boost::math::quantile(boost::math::normal(), 1 - 0.01 / (2 * 24));
+  for (int region = 0; region <= 1; ++region) {
+    Eigen::Array3d sum = Eigen::Array3d::Zero(), var = Eigen::Array3d::Zero();
+    double n = 0;
+    int pixels = 0;
+    for (int y = 0; y < film.height(); ++y)
+      for (int x = 0; x < film.width(); ++x) {
+        if (coverage(file.scene->camera(), *file.scene, x, y) != region) continue;
+        const double c = film.count(x, y);
+        sum += film.mean(x, y).cast<double>() * c;
+        var += film.sampleVariance(x, y).cast<double>() * c;
+        n += c;
+        ++pixels;
+      }
+    ASSERT_GT(pixels, 20) << "region " << region;
+    const Eigen::Array3d mean = sum / n;
+    const double expected = region == 1 ? kAlbedo * kBackground : kBackground;
+    for (int c = 0; c < 3; ++c) {
+      // The background region is exact (zero variance); allow float rounding there.
+      const double standardError = std::sqrt(var[c] / n / n);
+      const double bound = z * standardError + 1e-6 * expected;
+      EXPECT_NEAR(mean[c], expected, bound) << "region " << region << " channel " << c;
+    }
+  }
+  EXPECT_EQ(film.invalidSamples(), 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, AnalyticSphere,
+                         ::testing::Values("path_tracer_mats", "path_tracer_nee",
+                                           "path_tracer_mis"));
+
+}  // namespace
+}  // namespace verity
