@@ -15,6 +15,8 @@ class Film {
 
   // Adds one sample of pixel (x, y); returns false (and counts it) if it is NaN or Inf.
   bool addSample(int x, int y, const Color3& value);
+  // Counts a sample that was NaN or Inf (and so left out).
+  void addInvalidSample(int x, int y) { ++invalid_[index(x, y)]; }
   // Counts `n` zero-valued samples in every pixel (renders that need no ray).
   void addZeroSamples(uint32_t n);
 

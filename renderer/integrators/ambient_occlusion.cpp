@@ -5,16 +5,16 @@
 namespace verity {
 
 Color3 AmbientOcclusion::Li(const Scene& scene, Sampler& sampler, const Ray& ray,
-                            PathStats& stats) const {
+                            SampleContext& context) const {
   SurfaceInteraction si;
-  ++stats.rays;
+  ++context.stats.rays;
   if (!scene.intersect(ray, si)) return Color3::Ones();
   // The hemisphere on the side the camera ray arrived from.
   const Normal3f n = si.ng.dot(ray.d) < 0 ? si.ng : Normal3f(-si.ng);
   const Vector3f d = Frame(n).toWorld(warp::squareToCosineHemisphere(sampler.next2D()));
   Ray shadow = si.spawnRay(d);
   shadow.tmax = distance_;
-  ++stats.rays;
+  ++context.stats.rays;
   return scene.occluded(shadow) ? Color3::Zero() : Color3::Ones();
 }
 

@@ -9,7 +9,8 @@ namespace verity {
 class AmbientOcclusion : public Integrator {
  public:
   explicit AmbientOcclusion(float distance) : distance_(distance) {}
-  Color3 Li(const Scene& scene, Sampler& sampler, const Ray& ray, PathStats& stats) const override;
+  Color3 Li(const Scene& scene, Sampler& sampler, const Ray& ray,
+            SampleContext& context) const override;
   bool needsEmitters() const override { return false; }
 
  private:

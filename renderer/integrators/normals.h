@@ -7,9 +7,9 @@ namespace verity {
 
 class NormalsIntegrator : public Integrator {
  public:
-  Color3 Li(const Scene& scene, Sampler&, const Ray& ray, PathStats& stats) const override {
+  Color3 Li(const Scene& scene, Sampler&, const Ray& ray, SampleContext& context) const override {
     SurfaceInteraction si;
-    ++stats.rays;
+    ++context.stats.rays;
     if (!scene.intersect(ray, si)) return Color3::Zero();
     return 0.5f * (si.shading.n.array() + 1.0f);
   }

@@ -27,7 +27,7 @@ float PathTracer::emissionWeight(bool countedByLightSampling, float bsdfPdf, flo
 }
 
 Color3 PathTracer::sampleLight(const Scene& scene, Sampler& sampler, const SurfaceInteraction& si,
-                               const Vector3f& wi, PathStats& stats) const {
+                               const Vector3f& wi, SampleContext& context) const {
   float pmf = 0;
   const Light* light = scene.sampleLight(sampler.next1D(), &pmf);
   const Point2f u = sampler.next2D();
@@ -39,7 +39,7 @@ Color3 PathTracer::sampleLight(const Scene& scene, Sampler& sampler, const Surfa
   const Color3 f = si.material->eval(q, wi, wo, TransportMode::Radiance) * std::fabs(wo.z());
   if (isBlack(f)) return Color3::Zero();
   const Ray shadow = ls->atInfinity ? si.spawnRay(ls->wi) : si.spawnRayTo(ls->p, ls->n);
-  ++stats.rays;
+  ++context.stats.rays;
   if (scene.occluded(shadow)) return Color3::Zero();
   const float lightPdf = pmf * ls->pdf;
   const float w = strategy_ == Strategy::Mis ? misWeight(lightPdf, si.material->pdf(q, wi, wo)) : 1;
@@ -47,7 +47,7 @@ Color3 PathTracer::sampleLight(const Scene& scene, Sampler& sampler, const Surfa
 }
 
 Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay,
-                      PathStats& stats) const {
+                      SampleContext& context) const {
   Color3 L = Color3::Zero(), beta = Color3::Ones();
   Ray ray = cameraRay;
   // Whether emission reached by the current ray could also have been found by sampling a
@@ -59,7 +59,7 @@ Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay
 
   for (int bounce = 0;; ++bounce) {
     SurfaceInteraction si;
-    ++stats.rays;
+    ++context.stats.rays;
     if (!scene.intersect(ray, si)) {
       if (const EnvironmentLight* bg = scene.background()) {
         const float lightPdf = lightSampledBefore ? scene.lightPmf(bg) * bg->pdfLi(ray.d) : 0;
@@ -80,7 +80,7 @@ Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay
 
     const Vector3f wi = si.toLocal(-ray.d);
     const bool canSampleLights = samplesLights && si.material->hasNonDeltaLobe();
-    if (canSampleLights) L += beta * sampleLight(scene, sampler, si, wi, stats);
+    if (canSampleLights) L += beta * sampleLight(scene, sampler, si, wi, context);
 
     const float uLobe = sampler.next1D();
     const auto bs = si.material->sample(si.textureQuery(), wi, uLobe, sampler.next2D(),

@@ -16,7 +16,8 @@ class PathTracer : public Integrator {
 
   PathTracer(Strategy strategy, int maxBounces, float misPower)
       : strategy_(strategy), maxBounces_(maxBounces), misPower_(misPower) {}
-  Color3 Li(const Scene& scene, Sampler& sampler, const Ray& ray, PathStats& stats) const override;
+  Color3 Li(const Scene& scene, Sampler& sampler, const Ray& ray,
+            SampleContext& context) const override;
 
  private:
   // Weight of a strategy of density `pdf` against one of density `other`.
@@ -25,7 +26,7 @@ class PathTracer : public Integrator {
   // sampling had density `lightPdf` for the same point.
   float emissionWeight(bool countedByLightSampling, float bsdfPdf, float lightPdf) const;
   Color3 sampleLight(const Scene& scene, Sampler& sampler, const SurfaceInteraction& si,
-                     const Vector3f& wi, PathStats& stats) const;
+                     const Vector3f& wi, SampleContext& context) const;
 
   Strategy strategy_;
   int maxBounces_;

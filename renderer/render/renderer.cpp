@@ -40,9 +40,14 @@ RenderStats render(const Scene& scene, const Integrator& integrator, const Sampl
   }
 
   const std::vector<Tile> tiles = makeTiles(film.resolution());
-  std::vector<PathStats> tileStats(tiles.size());
-  std::vector<uint64_t> tileInvalid(tiles.size(), 0);
+  std::vector<SampleContext> contexts(tiles.size());
   const Camera& camera = scene.camera();
+  const int width = film.width();
+  // This pass's value of every pixel: its own camera sample plus the splats that land on it.
+  // Together they are one independent sample of the pixel, so per-pixel sums of squares give
+  // a valid variance for splatting integrators too.
+  std::vector<Color3> passValues(size_t(width) * film.height());
+  std::vector<uint8_t> passValid(passValues.size());
   Progress progress(uint64_t(spp) * tiles.size(), options.progress);
   // TBB caps its workers at the core count unless told otherwise; an explicit thread count
   // beyond it (oversubscription, tests of 3 threads on 2 cores) must still get its threads.
@@ -62,6 +67,8 @@ RenderStats render(const Scene& scene, const Integrator& integrator, const Sampl
     arena.execute([&] {
       tbb::parallel_for(size_t(0), tiles.size(), [&](size_t t) {
         const Tile& tile = tiles[t];
+        SampleContext& context = contexts[t];
+        context.splats.clear();
         auto sampler = prototype.clone();
         sampler->setSamplesPerPixel(spp);
         for (int y = tile.y0; y < tile.y1; ++y) {
@@ -69,22 +76,36 @@ RenderStats render(const Scene& scene, const Integrator& integrator, const Sampl
             sampler->startPixelSample(Point2i(x, y), pass);
             const Point2f filmPosition = Point2f(x, y) + sampler->next2D();
             const Ray ray = camera.generateRay(filmPosition, sampler->next2D());
-            const Color3 L = integrator.Li(scene, *sampler, ray, tileStats[t]);
+            const Color3 L = integrator.Li(scene, *sampler, ray, context);
             // Tiles own disjoint pixels, so concurrent tiles never touch the same entry.
-            if (!film.addSample(x, y, L)) ++tileInvalid[t];
+            const size_t i = size_t(y) * width + x;
+            passValid[i] = L.allFinite();
+            passValues[i] = passValid[i] ? L : Color3::Zero();
           }
         }
         progress.advance(1);
       });
     });
+    for (const SampleContext& context : contexts)
+      for (const Splat& s : context.splats)
+        passValues[size_t(s.pixel.y()) * width + s.pixel.x()] += s.value;
+    for (int y = 0; y < film.height(); ++y)
+      for (int x = 0; x < width; ++x) {
+        const size_t i = size_t(y) * width + x;
+        if (passValid[i])
+          film.addSample(x, y, passValues[i]);
+        else
+          film.addInvalidSample(x, y);
+      }
     stats.passes = pass + 1;
   }
   progress.finish();
 
-  for (size_t t = 0; t < tiles.size(); ++t) {
-    stats.rays += tileStats[t].rays;
-    stats.invalidSamples += tileInvalid[t];
+  for (const SampleContext& context : contexts) {
+    stats.rays += context.stats.rays;
+    stats.invalidSamples += context.invalidSplats;
   }
+  stats.invalidSamples += film.invalidSamples();
   stats.samples = uint64_t(stats.passes) * film.width() * film.height();
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return stats;
