@@ -61,11 +61,11 @@ std::optional<LightSample> EnvironmentLight::sampleLi(const Point3f&, const Poin
     ls.pdf = kInv4Pi;
   } else {
     float mapPdf = 0;
-    const Point2f uv = distribution_.sample(u, &mapPdf);
-    ls.wi = uvToDirection(uv);
-    const float sinTheta = std::sin((1 - uv.y()) * kPi);
-    if (!(mapPdf > 0) || !(sinTheta > 0)) return std::nullopt;
-    ls.pdf = mapPdf / (2 * kPi * kPi * sinTheta);
+    ls.wi = uvToDirection(distribution_.sample(u, &mapPdf));
+    // The density as pdfLi() computes it for this direction, so that MIS sees one value
+    // even where rounding moves the direction across a texel boundary.
+    ls.pdf = pdfLi(ls.wi);
+    if (!(mapPdf > 0) || !(ls.pdf > 0)) return std::nullopt;
   }
   ls.radiance = radiance(ls.wi);
   if (isBlack(ls.radiance) || !(ls.pdf > 0)) return std::nullopt;
@@ -74,8 +74,10 @@ std::optional<LightSample> EnvironmentLight::sampleLi(const Point3f&, const Poin
 
 float EnvironmentLight::pdfLi(const Vector3f& d) const {
   if (!image_) return kInv4Pi;
-  const Point2f uv = directionToUv(d.normalized());
-  const float sinTheta = std::sin((1 - uv.y()) * kPi);
+  const Vector3f n = d.normalized();
+  const Point2f uv = directionToUv(n);
+  // From the direction itself: accurate near the poles, where acos is not.
+  const float sinTheta = std::hypot(n.x(), n.z());
   if (!(sinTheta > 0)) return 0;
   return distribution_.pdf(uv) / (2 * kPi * kPi * sinTheta);
 }
