@@ -68,12 +68,19 @@ JsonNode JsonNode::parse(const std::string& text, const std::filesystem::path& f
   } catch (const nlohmann::json::parse_error& e) {
     // e.byte is one past the offending character.
     const auto [line, column] = lineColumn(text, e.byte > 0 ? e.byte - 1 : 0);
+    // nlohmann's message repeats its own position before the description: keep the latter.
     std::string what = e.what();
-    const auto cut = what.find("parse error");
-    if (cut != std::string::npos) what = what.substr(cut);
+    const auto cut = what.find(": ", what.find("parse error"));
+    if (cut != std::string::npos) what = what.substr(cut + 2);
     throw VerityError(
         file.string(), "",
         fmt::format("JSON syntax error at line {}, column {}: {}", line, column, what));
+  } catch (const nlohmann::json::exception& e) {
+    // Valid syntax the parser still refuses, such as a number too large for a double.
+    std::string what = e.what();
+    const auto cut = what.find("] ");
+    if (cut != std::string::npos) what = what.substr(cut + 2);
+    throw VerityError(file.string(), "", "JSON error: " + what);
   }
   if (!root->is_object())
     throw VerityError(file.string(), "", "the scene must be a JSON object, not " + typeName(*root));

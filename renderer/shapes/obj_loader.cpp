@@ -2,7 +2,9 @@
 
 #include <tiny_obj_loader.h>
 
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <tuple>
 
 #include "core/error.h"
@@ -14,11 +16,21 @@ MeshData loadObj(const std::filesystem::path& file, const Transform& toWorld,
   const std::string name = file.string();
   if (!std::filesystem::is_regular_file(file))
     throw VerityError("", jsonPath, "mesh file \"" + name + "\" does not exist");
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  if (!in) throw VerityError("", jsonPath, "cannot read mesh file \"" + name + "\"");
+  return parseObj(text.str(), name, toWorld, jsonPath);
+}
+
+MeshData parseObj(const std::string& text, const std::string& name, const Transform& toWorld,
+                  const std::string& jsonPath) {
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(name, config)) {
+  // Materials (.mtl) are not read: the scene assigns materials.
+  if (!reader.ParseFromString(text, "", config)) {
     std::string message = reader.Error();
     while (!message.empty() && message.back() == '\n') message.pop_back();
     throw VerityError("", jsonPath, "cannot read mesh \"" + name + "\": " + message);
