@@ -401,15 +401,19 @@ def veach_mats():
     """Veach (1997, fig. 9.2): four glossy plates under four spherical lights.
 
     The plates (8 x 1) are placed and tilted as in the classic scene so that
-    each mirrors the row of lights (y = 0, z = 0) towards the camera at
-    (0, 2, 15): the plate normal is the half-vector between the directions to
+    each mirrors the row of lights (y = 0, z = 0) towards the camera: the plate normal is the half-vector between the directions to
     the camera and to the lights. Each light emits the same power
     (radius^2 * L is constant): 0.033 / 901.8, 0.1 / 100, 0.3 / 11.1, 0.9 / 1.23.
     The plates go from nearly specular (back, top of the image) to rough (front). A fifth, far
     light dimly lights the dark backdrop, as in the original.
     """
     centres = [(-2.39513, -0.13512), (-3.06340, 0.92313), (-3.58237, 2.22305), (-3.90842, 3.57446)]
-    cam = [0, 2, 15]
+    # The classic view, from (0, 2, 15) at (0, -2, 2.5) with a 28-degree vertical field of
+    # view, moved back along the same line so that the 16-degree field of view the project
+    # specifies frames the same picture: distance × tan(14°) / tan(8°).
+    at = [0, -2, 2.5]
+    back = math.tan(math.radians(14)) / math.tan(math.radians(8))
+    cam = [round(a + back * (c - a), 4) for a, c in zip(at, [0, 2, 15])]
     alphas = [0.01, 0.025, 0.05, 0.1]      # back (top of the image) to front
     mats = [
         {"name": "backdrop", "type": "lambertian", "albedo": 0.25},
@@ -439,9 +443,7 @@ def veach_mats():
     surfaces.append(quad(40, [{"axis": [1, 0, 0], "angle": -90}, {"translate": [0, -4.1, 0]}], "backdrop"))
     surfaces.append(quad(40, {"translate": [0, 0, -2]}, "backdrop"))
     return {
-        # the classic camera: from (0,2,15) at (0,-2,2.5) with a 28-degree vertical field of
-        # view at 768x512 (vfov 16 would crop the outer lights and the plate ends)
-        "camera": camera(cam, [0, -2, 2.5], 28, [768, 512]),
+        "camera": camera(cam, at, 16, [768, 512]),
         "integrator": integrator("path_tracer_mis", 64),
         "sampler": {"type": "independent"},
         "image_samples": 32,
