@@ -4,7 +4,11 @@
 #include <CLI/CLI.hpp>
 
 #include "app/bench_command.h"
+#include "app/compare_command.h"
+#include "app/reference_command.h"
 #include "app/render_command.h"
+#include "app/report_command.h"
+#include "app/study_command.h"
 #include "core/error.h"
 
 int main(int argc, char** argv) {
@@ -12,6 +16,10 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   verity::addRenderCommand(app);
   verity::addBenchCommand(app);
+  verity::addCompareCommand(app);
+  verity::addReferenceCommand(app);
+  verity::addStudyCommand(app);
+  verity::addReportCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

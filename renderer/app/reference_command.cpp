@@ -1,0 +1,41 @@
+#include "app/reference_command.h"
+
+
+#include <fmt/format.h>
+
+#include "validation/studies/reference.h"
+
+namespace verity {
+
+void addReferenceCommand(CLI::App& app) {
+  auto config = std::make_shared<studies::ReferenceConfig>();
+  CLI::App* cmd = app.add_subcommand(
+      "reference",
+      "Render a reference image with variance channels: <dir>/<scene>.exr and <scene>.json");
+  cmd->add_option("scene", config->scene, "Scene file (.json)")->required();
+  cmd->add_option("--spp", config->spp, "Samples per pixel")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--integrator", config->integrator, "Integrator type (default: the scene's)");
+  cmd->add_option("--max-bounces", config->maxBounces,
+                  "Maximum scattering events per path (default: the scene's)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--threads", config->threads, "Worker threads (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--resolution", config->resolution,
+                  "Image width in pixels (the scene's aspect ratio is kept)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--dir", config->directory, "Output folder")->capture_default_str();
+  cmd->add_option("--seed", config->seed, "Seed (default: derived from the scene's name)");
+  cmd->callback([config] {
+    const studies::ReferenceResult r = studies::makeReference(*config);
+    fmt::print(stderr, "{}: {} spp of {} at {}x{}, {:.2f} s; its own relative MSE {:.3g}\n",
+               r.metadata["scene"].get<std::string>(), r.metadata["spp"].get<int>(),
+               r.metadata["integrator"].get<std::string>(), r.metadata["width"].get<int>(),
+               r.metadata["height"].get<int>(), r.metadata["wall_seconds"].get<double>(),
+               r.metadata["rel_mse"].get<double>());
+    fmt::print(stderr, "wrote {}\nwrote {}\n", r.image.string(), r.sidecar.string());
+  });
+}
+
+}  // namespace verity

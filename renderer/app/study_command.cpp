@@ -1,0 +1,120 @@
+#include "app/study_command.h"
+
+
+#include <fmt/format.h>
+
+#include "validation/studies/convergence.h"
+#include "validation/studies/study_util.h"
+#include "validation/studies/summary.h"
+
+namespace verity {
+
+namespace {
+
+void printSummary(const std::filesystem::path& results) {
+  const auto records = studies::readJsonLines(results);
+  fmt::print("{}", studies::summaryText(studies::summarize(records)));
+}
+
+void logLine(const std::string& line) {
+  fmt::print(stderr, "{}\n", line);
+}
+
+void addConvergence(CLI::App& study) {
+  auto config = std::make_shared<studies::ConvergenceConfig>();
+  auto spp = std::make_shared<std::vector<double>>();
+  auto time = std::make_shared<std::vector<double>>();
+  auto output = std::make_shared<std::string>("results.jsonl");
+  auto reference = std::make_shared<std::string>();
+  auto noImages = std::make_shared<bool>(false);
+  CLI::App* cmd = study.add_subcommand(
+      "convergence",
+      "Independent seeded runs per integrator and budget: relative MSE against a reference, "
+      "wall and CPU time; appended to a JSON Lines file and resumable");
+  cmd->add_option("scene", config->scene, "Scene file (.json)")->required();
+  cmd->add_option("--integrators", config->integrators, "Integrators, comma-separated")
+      ->required()
+      ->delimiter(',');
+  cmd->add_option("--runs", config->runs, "Independent runs per integrator and budget")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  CLI::Option* sppOption =
+      cmd->add_option("--spp", *spp, "Budgets in samples per pixel, comma-separated")
+          ->delimiter(',');
+  CLI::Option* timeOption =
+      cmd->add_option("--time", *time, "Budgets in seconds of wall time, comma-separated")
+          ->delimiter(',');
+  sppOption->excludes(timeOption);
+  timeOption->excludes(sppOption);
+  cmd->add_option("--threads", config->threads,
+                  "Thread counts, comma-separated (0: all cores; default 0)")
+      ->delimiter(',');
+  cmd->add_option("--reference", *reference,
+                  "Reference EXR with variance channels (default: references/<scene>.exr)");
+  cmd->add_option("-o,--output", *output, "Results file (JSON Lines; appended to)")
+      ->capture_default_str();
+  cmd->add_option("--resolution", config->resolution, "Image width (default: the reference's)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-bounces", config->maxBounces, "Maximum scattering events per path")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--no-error-images", *noImages,
+                "Do not save relative-error images at the largest budget");
+  cmd->callback([=] {
+    if (spp->empty() == time->empty())
+      throw CLI::ValidationError("convergence", "give budgets with either --spp or --time");
+    config->budgetType = spp->empty() ? "time" : "spp";
+    config->budgets = spp->empty() ? *time : *spp;
+    config->output = *output;
+    config->reference = *reference;
+    config->errorImages = !*noImages;
+    const studies::StudyProgress p = studies::runConvergenceStudy(*config, logLine);
+    fmt::print(stderr, "{} runs done, {} already in {}\n", p.done, p.skipped, *output);
+    printSummary(*output);
+  });
+}
+
+void addSpeedup(CLI::App& study) {
+  auto config = std::make_shared<studies::SpeedupConfig>();
+  auto output = std::make_shared<std::string>("speedup.jsonl");
+  CLI::App* cmd = study.add_subcommand(
+      "speedup",
+      "Time per integrator and thread count (alternating, medians): speed-up and parallel "
+      "efficiency");
+  cmd->add_option("scene", config->scene, "Scene file (.json)")->required();
+  cmd->add_option("--threads", config->threads, "Thread counts, comma-separated")
+      ->capture_default_str()
+      ->delimiter(',')
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--integrators", config->integrators, "Integrators, comma-separated")
+      ->required()
+      ->delimiter(',');
+  cmd->add_option("--spp", config->spp, "Samples per pixel of each timed render")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--repeats", config->repeats, "Alternating repeats")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--resolution", config->resolution, "Image width (default: the scene's)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-bounces", config->maxBounces, "Maximum scattering events per path")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("-o,--output", *output, "Results file (JSON Lines; appended to)")
+      ->capture_default_str();
+  cmd->callback([=] {
+    config->output = *output;
+    const studies::StudyProgress p = studies::runSpeedupStudy(*config, logLine);
+    fmt::print(stderr, "{} renders done, {} already in {}\n", p.done, p.skipped, *output);
+    printSummary(*output);
+  });
+}
+
+}  // namespace
+
+void addStudyCommand(CLI::App& app) {
+  CLI::App* study = app.add_subcommand("study", "Convergence and speed-up studies");
+  study->require_subcommand(1);
+  addConvergence(*study);
+  addSpeedup(*study);
+}
+
+}  // namespace verity

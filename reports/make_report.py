@@ -1,0 +1,381 @@
+#!/usr/bin/python3
+"""Study report for Verity: plots (matplotlib) and an HTML page and Markdown summary.
+
+Run by `verity report`, which first writes summary.json (fits, efficiencies, speed-ups,
+computed in C++: validation/studies/summary.cpp). This script only draws and formats:
+
+    /usr/bin/python3 reports/make_report.py --summary OUT/summary.json --out OUT results.jsonl...
+
+Relative-error images are NumPy arrays (.npy) saved by `verity study convergence` at the
+largest budget; their paths in the records are relative to the results file's folder.
+"""
+import argparse
+import collections
+import html
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.colors import LogNorm  # noqa: E402
+
+
+def read_records(paths):
+    records = []
+    for path in paths:
+        with open(path) as f:
+            for line in f:
+                line = line.strip()
+                if not line:
+                    continue
+                try:
+                    r = json.loads(line)
+                except json.JSONDecodeError:
+                    continue  # a line cut off by an interrupted study
+                r["_dir"] = os.path.dirname(os.path.abspath(path))
+                records.append(r)
+    return records
+
+
+def fmt_fit(f):
+    if f is None or f.get("slope") is None:
+        return "n/a"
+    if f.get("slope_low") is None:
+        return f"{f['slope']:.3f}"
+    return f"{f['slope']:.3f} [{f['slope_low']:.3f}, {f['slope_high']:.3f}]"
+
+
+def covers(f, value=-1.0):
+    if f is None or f.get("slope_low") is None:
+        return "n/a"
+    return "yes" if f["slope_low"] <= value <= f["slope_high"] else "**no**"
+
+
+def scenes_of(records, study):
+    return sorted({r["scene"] for r in records if r.get("study") == study})
+
+
+def plot_error(conv, out_dir, x_key, x_label, file_name, fits):
+    """One panel per (scene, integrator); one curve per thread count."""
+    panels = sorted({(r["scene"], r["integrator"]) for r in conv})
+    if not panels:
+        return None
+    cols = min(3, len(panels))
+    rows = math.ceil(len(panels) / cols)
+    fig, axes = plt.subplots(rows, cols, figsize=(4.6 * cols, 3.8 * rows), squeeze=False)
+    for ax, (scene, integ) in zip(axes.flat, panels):
+        runs = [r for r in conv if r["scene"] == scene and r["integrator"] == integ]
+        curves = sorted({(r["threads"], r["budget_type"]) for r in runs})
+        kinds = {k for _, k in curves}
+        for i, (threads, kind) in enumerate(curves):
+            rs = [r for r in runs if r["threads"] == threads and r["budget_type"] == kind
+                  and r["rel_mse"] > 0]
+            color = f"C{i}"
+            xs = np.array([r[x_key] for r in rs], float)
+            ys = np.array([r["rel_mse"] for r in rs], float)
+            ax.scatter(xs, ys, s=9, alpha=0.45, color=color,
+                       marker="o" if kind == "spp" else "^")
+            by_budget = collections.defaultdict(list)
+            for r in rs:
+                by_budget[r["budget"]].append(r)
+            mx = [np.median([r[x_key] for r in v]) for _, v in sorted(by_budget.items())]
+            my = [np.median([r["rel_mse"] for r in v]) for _, v in sorted(by_budget.items())]
+            fit = fits.get((scene, integ, threads, kind))
+            label = f"{threads} thread{'s' if threads != 1 else ''}"
+            if len(kinds) > 1:
+                label += f" ({'spp' if kind == 'spp' else 'time'} budgets)"
+            if fit and fit.get("slope") is not None:
+                label += f", slope {fmt_fit(fit)}"
+            ax.plot(mx, my, "-o", color=color, ms=3, label=label)
+        # A slope −1 guide through the first curve's smallest budget.
+        if runs:
+            x0 = min(r[x_key] for r in runs if r[x_key] > 0)
+            x1 = max(r[x_key] for r in runs)
+            y0 = np.median([r["rel_mse"] for r in runs if r[x_key] <= x0 * 1.5])
+            ax.plot([x0, x1], [y0, y0 * x0 / x1], "k--", lw=0.8, label="slope −1")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel(x_label)
+        ax.set_ylabel("relative MSE")
+        ax.set_title(f"{scene}: {integ}", fontsize=10)
+        ax.grid(True, which="both", alpha=0.25)
+        ax.legend(fontsize=7)
+    for ax in list(axes.flat)[len(panels):]:
+        ax.set_visible(False)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, file_name), dpi=110)
+    plt.close(fig)
+    return file_name
+
+
+def plot_efficiency(summary, out_dir):
+    groups = summary.get("convergence", [])
+    if not groups:
+        return None
+    scenes = sorted({g["scene"] for g in groups})
+    n_integ = len({g["integrator"] for g in groups})
+    fig, axes = plt.subplots(1, len(scenes), figsize=((1.4 * n_integ + 2.5) * len(scenes), 4),
+                             squeeze=False)
+    for ax, scene in zip(axes.flat, scenes):
+        gs = [g for g in groups if g["scene"] == scene]
+        integs = sorted({g["integrator"] for g in gs})
+        series = sorted({(g["threads"], g["budget_type"]) for g in gs})
+        kinds = {k for _, k in series}
+        width = 0.8 / len(series)
+        for j, (t, kind) in enumerate(series):
+            vals = []
+            for integ in integs:
+                g = [g for g in gs if g["integrator"] == integ and g["threads"] == t
+                     and g["budget_type"] == kind]
+                vals.append(g[0]["efficiency"] if g else 0)
+            label = f"{t} thread{'s' if t != 1 else ''}"
+            if len(kinds) > 1:
+                label += f" ({'spp' if kind == 'spp' else 'time'} budgets)"
+            ax.bar(np.arange(len(integs)) + (j - (len(series) - 1) / 2) * width, vals, width,
+                   label=label, color=f"C{j}")
+        ax.set_xticks(np.arange(len(integs)))
+        ax.set_xticklabels(integs, rotation=20, ha="right", fontsize=8)
+        ax.set_yscale("log")
+        ax.set_ylabel("efficiency 1 / (relMSE · seconds)")
+        ax.set_title(f"{scene}: efficiency at the largest budget\n(median over runs)", fontsize=10)
+        ax.grid(True, axis="y", which="both", alpha=0.25)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "efficiency.png"), dpi=110)
+    plt.close(fig)
+    return "efficiency.png"
+
+
+def plot_speedup(summary, out_dir):
+    rows = summary.get("speedup", [])
+    if not rows:
+        return None
+    scenes = sorted({r["scene"] for r in rows})
+    fig, axes = plt.subplots(1, len(scenes), figsize=(5.2 * len(scenes), 4), squeeze=False)
+    for ax, scene in zip(axes.flat, scenes):
+        rs = [r for r in rows if r["scene"] == scene]
+        all_threads = sorted({r["threads"] for r in rs})
+        base = min(all_threads)
+        ax.plot(all_threads, [t / base for t in all_threads], "k--", lw=0.8, label="ideal")
+        for i, integ in enumerate(sorted({r["integrator"] for r in rs})):
+            pts = sorted((r["threads"], r["speedup"]) for r in rs if r["integrator"] == integ)
+            ax.plot([p[0] for p in pts], [p[1] for p in pts], "-o", color=f"C{i}", ms=4,
+                    label=integ)
+        ax.set_xscale("log", base=2)
+        ax.set_yscale("log", base=2)
+        ax.set_xticks(all_threads)
+        ax.set_xticklabels([str(t) for t in all_threads])
+        ax.set_xlabel("threads")
+        ax.set_ylabel(f"speed-up over {base} thread{'s' if base != 1 else ''} (median times)")
+        ax.set_title(f"{scene}: speed-up", fontsize=10)
+        ax.grid(True, which="both", alpha=0.25)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "speedup.png"), dpi=110)
+    plt.close(fig)
+    return "speedup.png"
+
+
+def plot_error_images(conv, out_dir):
+    """False colour: per-pixel relative RMS error sqrt(mean_c (x − r)² / (r² + ε)), log scale."""
+    items = []
+    for r in conv:
+        if "error_image" in r:
+            path = os.path.join(r["_dir"], r["error_image"])
+            if os.path.exists(path):
+                items.append((r, np.load(path)))
+    if not items:
+        return None
+    items.sort(key=lambda it: (it[0]["scene"], it[0]["integrator"]))
+    positive = np.concatenate([img[img > 0].ravel() for _, img in items])
+    if positive.size == 0:
+        return None
+    lo, hi = np.percentile(positive, 1), np.percentile(positive, 99.5)
+    lo = max(lo, hi * 1e-4)
+    cols = min(4, len(items))
+    rows = math.ceil(len(items) / cols)
+    fig, axes = plt.subplots(rows, cols, figsize=(3.6 * cols, 3.4 * rows), squeeze=False)
+    im = None
+    for ax, (r, img) in zip(axes.flat, items):
+        im = ax.imshow(np.clip(img, lo, hi), cmap="inferno", norm=LogNorm(vmin=lo, vmax=hi),
+                       interpolation="nearest")
+        unit = "spp" if r["budget_type"] == "spp" else "s"
+        ax.set_title(f"{r['integrator']}\n{r['scene']}, {r['budget']:g} {unit}, "
+                     f"relMSE {r['rel_mse']:.3g}", fontsize=8)
+        ax.set_xticks([])
+        ax.set_yticks([])
+    for ax in list(axes.flat)[len(items):]:
+        ax.set_visible(False)
+    fig.colorbar(im, ax=list(axes.flat), shrink=0.85,
+                 label="relative RMS error")
+    fig.savefig(os.path.join(out_dir, "relative_error_images.png"), dpi=110, bbox_inches="tight")
+    plt.close(fig)
+    return "relative_error_images.png"
+
+
+def tables(summary):
+    """Returns a list of (title, header, rows, note) tables."""
+    out = []
+    conf = int(round(100 * summary.get("confidence", 0.95)))
+    conv = summary.get("convergence", [])
+    if conv:
+        eps = conv[0].get("rel_mse_epsilon")
+        rows = []
+        for g in conv:
+            rows.append([g["scene"], g["integrator"], g["threads"], g["budget_type"], g["runs"],
+                         fmt_fit(g["fit_time"]), fmt_fit(g["fit_spp"]), covers(g["fit_spp"]),
+                         fmt_fit(g.get("fit_spp_of_means")),
+                         f"{g['efficiency']:.4g}", f"{g.get('reference_rel_mse', 0):.3g}"])
+        out.append(("Convergence",
+                    ["scene", "integrator", "threads", "budget", "runs",
+                     f"slope vs time [{conf}% CI]",
+                     f"slope vs spp [{conf}% CI]", "spp CI covers −1",
+                     "slope of mean relMSE vs spp", "efficiency",
+                     "reference's relMSE"],
+                    rows,
+                    f"Relative MSE = mean over pixels and channels of (x − r)² / (r² + ε), "
+                    f"ε = {eps}. Slopes: ordinary least squares of log relMSE on log cost over "
+                    f"all runs, Student-t interval; the slope of the mean relMSE over runs per "
+                    f"budget is unbiased for heavy-tailed estimators, whose per-run slope can "
+                    f"be flatter than −1 (rare large samples are missed more often at small "
+                    f"budgets). Efficiency = 1 / (relMSE · wall seconds), "
+                    f"median over the runs at the largest budget. An unbiased estimator "
+                    f"has slope −1 until the reference's own error (last column) is reached."))
+        detail = []
+        for g in conv:
+            for b in g["budgets"]:
+                unit = " spp" if g["budget_type"] == "spp" else " s"
+                detail.append([g["scene"], g["integrator"], g["threads"], f"{b['budget']:g}{unit}",
+                               b["runs"], f"{b['median_spp']:g}",
+                               f"{b['median_wall_seconds']:.4g}", f"{b['median_cpu_seconds']:.4g}",
+                               f"{b['median_rel_mse']:.4g}", f"{b['median_rel_variance']:.4g}",
+                               f"{b['median_efficiency']:.4g}"])
+        out.append(("Per budget (medians over runs)",
+                    ["scene", "integrator", "threads", "budget", "runs", "spp", "wall s", "CPU s",
+                     "relMSE", "rel. variance est.", "efficiency"], detail,
+                    "rel. variance est.: the run's own estimate of its relative MSE from its "
+                    "per-pixel variance (mean of Var[mean] / (r² + ε)); close to relMSE when "
+                    "the estimator is unbiased and the reference is good."))
+    best = summary.get("best", [])
+    if best:
+        rows = []
+        for b in best:
+            others = ", ".join(f"{v:.2f}× {k}" for k, v in sorted(b["times_better_than"].items())
+                               if k != b["integrator"])
+            rows.append([b["scene"], b["threads"], b["budget_type"], b["integrator"],
+                         f"{b['efficiency']:.4g}", others or "—"])
+        out.append(("Most efficient integrator",
+                    ["scene", "threads", "budget", "best integrator", "efficiency",
+                     "times as efficient as"], rows, None))
+    speed = summary.get("speedup", [])
+    if speed:
+        rows = [[s["scene"], s["integrator"], s["spp"], s["threads"], s["repeats"],
+                 f"{s['median_wall_seconds']:.4g}", f"{s['speedup']:.3f}",
+                 f"{s['parallel_efficiency']:.3f}"] for s in speed]
+        out.append(("Speed-up",
+                    ["scene", "integrator", "spp", "threads", "repeats", "median wall s",
+                     "speed-up", "parallel efficiency"], rows,
+                    "Thread counts alternate within each repeat; speed-up = median time at the "
+                    "fewest threads / median time; parallel efficiency = speed-up × fewest "
+                    "threads / threads."))
+    return out
+
+
+def markdown_table(header, rows):
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    for r in rows:
+        lines.append("| " + " | ".join(str(c) for c in r) + " |")
+    return "\n".join(lines)
+
+
+def html_table(header, rows):
+    h = "".join(f"<th>{html.escape(str(c))}</th>" for c in header)
+    body = "".join("<tr>" + "".join(f"<td>{html.escape(str(c)).replace('**', '')}</td>"
+                                    for c in r) + "</tr>" for r in rows)
+    return f"<table><thead><tr>{h}</tr></thead><tbody>{body}</tbody></table>"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--summary", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("results", nargs="+")
+    args = ap.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    with open(args.summary) as f:
+        summary = json.load(f)
+    records = read_records(args.results)
+    conv = [r for r in records if r.get("study") == "convergence"]
+
+    fits_time = {(g["scene"], g["integrator"], g["threads"], g["budget_type"]): g["fit_time"]
+                 for g in summary.get("convergence", [])}
+    fits_spp = {(g["scene"], g["integrator"], g["threads"], g["budget_type"]): g["fit_spp"]
+                for g in summary.get("convergence", [])}
+    figures = []
+    f = plot_error(conv, args.out, "wall_seconds", "wall time (s)", "error_vs_time.png", fits_time)
+    if f:
+        figures.append((f, "Relative MSE against wall time (log-log), one panel per integrator, "
+                           "one curve per thread count; dots are runs, lines join medians."))
+    f = plot_error(conv, args.out, "spp", "samples per pixel", "error_vs_spp.png", fits_spp)
+    if f:
+        figures.append((f, "Relative MSE against samples per pixel (log-log)."))
+    f = plot_efficiency(summary, args.out)
+    if f:
+        figures.append((f, "Efficiency 1 / (relMSE · time): higher is better."))
+    f = plot_speedup(summary, args.out)
+    if f:
+        figures.append((f, "Speed-up against threads, with the ideal line."))
+    f = plot_error_images(conv, args.out)
+    if f:
+        figures.append((f, "Per-pixel relative RMS error against the reference at the largest "
+                           "budget (run 0), false colour on a log scale."))
+
+    machine = summary.get("machine", {})
+    meta = (f"Generated {summary.get('created', '')} on {machine.get('hostname', '?')} "
+            f"({machine.get('cpu_model', '?')}, {machine.get('cores', '?')} cores), source "
+            f"revision {summary.get('revision', 'unknown')}. Results: "
+            + ", ".join(os.path.basename(p) for p in args.results) + ".")
+    hosts = sorted({r.get("hostname", "?") for r in records})
+    revs = sorted({r.get("revision", "unknown") for r in records})
+    meta_runs = f"Runs were made on {', '.join(hosts)} at revision(s) {', '.join(revs)}."
+
+    tbls = tables(summary)
+    md = ["# Verity study report", "", meta, "", meta_runs, ""]
+    for title, header, rows, note in tbls:
+        md += [f"## {title}", "", markdown_table(header, rows), ""]
+        if note:
+            md += [note, ""]
+    md += ["## Figures", ""]
+    for name, caption in figures:
+        md += [f"![{caption}]({name})", "", caption, ""]
+    with open(os.path.join(args.out, "summary.md"), "w") as f:
+        f.write("\n".join(md))
+
+    css = ("body{font-family:sans-serif;max-width:1200px;margin:2em auto;color:#222}"
+           "table{border-collapse:collapse;margin:1em 0;font-size:0.85em}"
+           "td,th{border:1px solid #bbb;padding:3px 7px;text-align:right}"
+           "th{background:#eee}img{max-width:100%}figcaption{font-size:0.9em;color:#555}")
+    parts = [f"<!doctype html><html><head><meta charset='utf-8'><title>Verity study report"
+             f"</title><style>{css}</style></head><body><h1>Verity study report</h1>",
+             f"<p>{html.escape(meta)}</p><p>{html.escape(meta_runs)}</p>"]
+    for title, header, rows, note in tbls:
+        parts.append(f"<h2>{html.escape(title)}</h2>" + html_table(header, rows))
+        if note:
+            parts.append(f"<p>{html.escape(note)}</p>")
+    parts.append("<h2>Figures</h2>")
+    for name, caption in figures:
+        parts.append(f"<figure><img src='{name}'><figcaption>{html.escape(caption)}"
+                     f"</figcaption></figure>")
+    parts.append("</body></html>")
+    with open(os.path.join(args.out, "index.html"), "w") as f:
+        f.write("\n".join(parts))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,37 @@
+// Per-pixel statistics of a rendered image: the mean of each pixel's samples, the unbiased
+// sample variance of ONE sample, and the number of valid samples, per colour channel. This is
+// what `verity render --variance` writes (R, G, B, variance.R/G/B, samples); the variance of
+// a pixel's mean is then variance / samples.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "film/image_io.h"
+
+namespace verity::validation {
+
+inline constexpr int kChannels = 3;
+inline constexpr const char* kChannelNames[kChannels] = {"R", "G", "B"};
+
+struct PixelStatistics {
+  std::string label;  // where the image came from (a file name), for error messages
+  int width = 0, height = 0;
+  std::array<std::vector<double>, kChannels> mean, variance;  // width·height each, row-major
+  std::vector<double> samples;                                // valid samples per pixel
+  std::map<std::string, std::string> attributes;              // the EXR's string attributes
+
+  size_t index(int x, int y) const { return size_t(y) * width + x; }
+};
+
+// Checks the planes (R, G, B, variance.R/G/B, samples) and their values; throws VerityError
+// naming `label` when a plane is missing (render with --variance), or a value is negative,
+// not finite, or a sample count is not a whole number.
+PixelStatistics pixelStatistics(const ImageChannels& image, const std::string& label);
+// readExr followed by pixelStatistics.
+PixelStatistics loadPixelStatistics(const std::filesystem::path& file);
+
+}  // namespace verity::validation

@@ -1,0 +1,33 @@
+// Reference images: a long render saved with its per-pixel variance, so that a study can
+// measure errors against it and say how much of them the reference itself contributes.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace verity::studies {
+
+struct ReferenceConfig {
+  std::filesystem::path scene;
+  int spp = 4096;
+  std::string integrator;  // "" : the scene's
+  int maxBounces = -1;     // < 0: the scene's
+  int threads = 0;         // 0: all cores
+  int resolution = 0;      // image width (the scene's aspect ratio is kept); 0: the scene's
+  std::filesystem::path directory = "references";
+  uint64_t seed = 0;  // 0: derived from the scene name (never equal to a study run's seed)
+};
+
+struct ReferenceResult {
+  std::filesystem::path image, sidecar;
+  nlohmann::json metadata;  // what the sidecar holds
+};
+
+// Writes <directory>/<scene>.exr (R, G, B means; variance.R/G/B, the variance of one sample;
+// samples; half floats, ZIP) and <directory>/<scene>.json: integrator, spp, seed, times,
+// threads, machine, source revision and the reference's own estimated relative MSE,
+// mean over pixels and channels of (variance / samples) / (mean² + ε).
+ReferenceResult makeReference(const ReferenceConfig& config);
+
+}  // namespace verity::studies

@@ -1,0 +1,204 @@
+#include "validation/studies/summary.h"
+
+#include <fmt/format.h>
+
+#include <map>
+#include <tuple>
+
+#include "validation/studies/fit.h"
+
+namespace verity::studies {
+
+namespace {
+
+nlohmann::json fitJson(const LineFit& f) {
+  auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
+  return {{"n", f.n},
+          {"slope", num(f.slope)},
+          {"intercept", num(f.intercept)},
+          {"slope_std_error", num(f.slopeStdError)},
+          {"slope_low", num(f.slopeLow)},
+          {"slope_high", num(f.slopeHigh)},
+          {"confidence", f.confidence},
+          {"residual_std", num(f.residualStd)}};
+}
+
+std::string fmtFit(const nlohmann::json& f) {
+  if (f["slope"].is_null()) return "n/a";
+  if (f["slope_low"].is_null()) return fmt::format("{:.3f}", f["slope"].get<double>());
+  return fmt::format("{:.3f} [{:.3f}, {:.3f}]", f["slope"].get<double>(),
+                     f["slope_low"].get<double>(), f["slope_high"].get<double>());
+}
+
+double mean(const std::vector<double>& v) {
+  double sum = 0;
+  for (double x : v) sum += x;
+  return v.empty() ? 0 : sum / double(v.size());
+}
+
+}  // namespace
+
+nlohmann::json summarize(const std::vector<nlohmann::json>& records, double confidence) {
+  using GroupKey = std::tuple<std::string, int, int, std::string, int, int, std::string>;
+  std::map<GroupKey, std::vector<const nlohmann::json*>> groups;
+  using SpeedKey = std::tuple<std::string, int, int, std::string, int, int>;
+  std::map<SpeedKey, std::map<int, std::vector<double>>> speed;
+  for (const nlohmann::json& r : records) {
+    const std::string study = r.value("study", "");
+    if (study == "convergence")
+      groups[{r.value("scene", ""), r.value("width", 0), r.value("height", 0),
+              r.value("integrator", ""), r.value("max_bounces", 0), r.value("threads", 0),
+              r.value("budget_type", "")}]
+          .push_back(&r);
+    else if (study == "speedup")
+      speed[{r.value("scene", ""), r.value("width", 0), r.value("height", 0),
+             r.value("integrator", ""), r.value("max_bounces", 0), r.value("spp", 0)}]
+           [r.value("threads", 0)]
+               .push_back(r.value("wall_seconds", 0.0));
+  }
+
+  nlohmann::json out = {{"convergence", nlohmann::json::array()},
+                        {"best", nlohmann::json::array()},
+                        {"speedup", nlohmann::json::array()},
+                        {"confidence", confidence}};
+  // (scene, w, h, budget type, threads) -> integrator -> efficiency
+  std::map<std::tuple<std::string, int, int, std::string, int>, std::map<std::string, double>>
+      efficiencies;
+  for (const auto& [key, runs] : groups) {
+    const auto& [scene, w, h, integrator, maxBounces, threads, budgetType] = key;
+    std::vector<double> time, spp, err;
+    std::map<double, std::vector<const nlohmann::json*>> byBudget;
+    for (const nlohmann::json* r : runs) {
+      time.push_back(r->value("wall_seconds", 0.0));
+      spp.push_back(r->value("spp", 0));
+      err.push_back(r->value("rel_mse", 0.0));
+      byBudget[r->value("budget", 0.0)].push_back(r);
+    }
+    nlohmann::json budgets = nlohmann::json::array();
+    std::vector<double> meanSpp, meanErr;
+    for (const auto& [budget, rs] : byBudget) {
+      std::vector<double> e, t, c, s, eff, var;
+      for (const nlohmann::json* r : rs) {
+        e.push_back(r->value("rel_mse", 0.0));
+        t.push_back(r->value("wall_seconds", 0.0));
+        c.push_back(r->value("cpu_seconds", 0.0));
+        s.push_back(r->value("spp", 0));
+        var.push_back(r->value("rel_variance", 0.0));
+        eff.push_back(1.0 / (r->value("rel_mse", 0.0) * r->value("wall_seconds", 0.0)));
+      }
+      meanSpp.push_back(mean(s));
+      meanErr.push_back(mean(e));
+      budgets.push_back({{"budget", budget},
+                         {"mean_rel_mse", mean(e)},
+                         {"runs", rs.size()},
+                         {"median_rel_mse", median(e)},
+                         {"median_rel_variance", median(var)},
+                         {"median_wall_seconds", median(t)},
+                         {"median_cpu_seconds", median(c)},
+                         {"median_spp", median(s)},
+                         {"median_efficiency", median(eff)}});
+    }
+    const double efficiency = budgets.back()["median_efficiency"].get<double>();
+    // With one budget, the spread of times is noise, not cost: no slope.
+    if (byBudget.size() < 2) time.clear(), spp.clear(), err.clear(), meanSpp.clear();
+    efficiencies[{scene, w, h, budgetType, threads}][integrator] = efficiency;
+    const nlohmann::json* first = runs.front();
+    out["convergence"].push_back(
+        {{"scene", scene},
+         {"width", w},
+         {"height", h},
+         {"integrator", integrator},
+         {"max_bounces", maxBounces},
+         {"threads", threads},
+         {"budget_type", budgetType},
+         {"runs", runs.size()},
+         {"rel_mse_epsilon", first->value("rel_mse_epsilon", 0.0)},
+         {"reference_rel_mse", first->value("reference_rel_mse", 0.0)},
+         {"fit_time", fitJson(fitLogLog(time, err, confidence))},
+         {"fit_spp", fitJson(fitLogLog(spp, err, confidence))},
+         {"fit_spp_of_means", fitJson(fitLogLog(meanSpp, meanErr, confidence))},
+         {"efficiency", efficiency},
+         {"budgets", budgets}});
+  }
+  for (const auto& [key, effs] : efficiencies) {
+    const auto& [scene, w, h, budgetType, threads] = key;
+    std::string best;
+    double bestEff = -1;
+    for (const auto& [name, e] : effs)
+      if (e > bestEff) bestEff = e, best = name;
+    nlohmann::json ratios = nlohmann::json::object();
+    for (const auto& [name, e] : effs) ratios[name] = bestEff / e;
+    out["best"].push_back({{"scene", scene},
+                           {"width", w},
+                           {"height", h},
+                           {"budget_type", budgetType},
+                           {"threads", threads},
+                           {"integrator", best},
+                           {"efficiency", bestEff},
+                           {"times_better_than", ratios}});
+  }
+  for (const auto& [key, byThreads] : speed) {
+    const auto& [scene, w, h, integrator, maxBounces, spp] = key;
+    const int fewest = byThreads.begin()->first;
+    const double base = median(byThreads.begin()->second);
+    for (const auto& [threads, times] : byThreads) {
+      const double m = median(times);
+      const double s = base / m;
+      out["speedup"].push_back({{"scene", scene},
+                                {"width", w},
+                                {"height", h},
+                                {"integrator", integrator},
+                                {"max_bounces", maxBounces},
+                                {"spp", spp},
+                                {"threads", threads},
+                                {"baseline_threads", fewest},
+                                {"repeats", times.size()},
+                                {"median_wall_seconds", m},
+                                {"speedup", s},
+                                {"parallel_efficiency", s * fewest / std::max(threads, 1)}});
+    }
+  }
+  return out;
+}
+
+std::string summaryText(const nlohmann::json& summary) {
+  std::string s;
+  if (!summary["convergence"].empty()) {
+    s += fmt::format(
+        "Convergence ({}% confidence intervals of the log-log slopes; relMSE epsilon {})\n",
+        int(std::lround(100 * summary["confidence"].get<double>())),
+        summary["convergence"][0]["rel_mse_epsilon"].get<double>());
+    s += fmt::format("{:<18} {:<16} {:>7} {:>5} {:>28} {:>28} {:>11}\n", "scene", "integrator",
+                     "threads", "runs", "slope vs time", "slope vs spp", "efficiency");
+    for (const nlohmann::json& g : summary["convergence"])
+      s += fmt::format("{:<18} {:<16} {:>7} {:>5} {:>28} {:>28} {:>11.4g}\n",
+                       g["scene"].get<std::string>(), g["integrator"].get<std::string>(),
+                       g["threads"].get<int>(), g["runs"].get<size_t>(), fmtFit(g["fit_time"]),
+                       fmtFit(g["fit_spp"]), g["efficiency"].get<double>());
+  }
+  for (const nlohmann::json& b : summary["best"]) {
+    s += fmt::format("most efficient on {} ({} threads, {} budgets): {}",
+                     b["scene"].get<std::string>(), b["threads"].get<int>(),
+                     b["budget_type"].get<std::string>(), b["integrator"].get<std::string>());
+    std::string others;
+    for (const auto& [name, ratio] : b["times_better_than"].items())
+      if (name != b["integrator"].get<std::string>())
+        others +=
+            fmt::format("{}{:.2f}x {}", others.empty() ? "" : ", ", ratio.get<double>(), name);
+    s += others.empty() ? "\n" : fmt::format("; its efficiency is {}\n", others);
+  }
+  if (!summary["speedup"].empty()) {
+    s += "Speed-up (medians of alternating repeats)\n";
+    s += fmt::format("{:<18} {:<16} {:>7} {:>8} {:>12} {:>9} {:>11}\n", "scene", "integrator",
+                     "threads", "repeats", "median s", "speed-up", "par. eff.");
+    for (const nlohmann::json& g : summary["speedup"])
+      s += fmt::format("{:<18} {:<16} {:>7} {:>8} {:>12.4f} {:>9.3f} {:>11.3f}\n",
+                       g["scene"].get<std::string>(), g["integrator"].get<std::string>(),
+                       g["threads"].get<int>(), g["repeats"].get<size_t>(),
+                       g["median_wall_seconds"].get<double>(), g["speedup"].get<double>(),
+                       g["parallel_efficiency"].get<double>());
+  }
+  return s;
+}
+
+}  // namespace verity::studies
