@@ -4,8 +4,6 @@
 // P samples per pixel.
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <cstring>
@@ -13,10 +11,14 @@
 #include <fstream>
 #include <thread>
 
+#include "child_process.h"
 #include "film/image_io.h"
 
 namespace verity {
 namespace {
+
+using testing::spawn;
+using testing::waitExit;
 
 const char* kScene = R"({
   "camera": {"transform": {"from": [0, 0, 4], "at": [0, 0, 0], "up": [0, 1, 0]}, "vfov": 40,
@@ -26,24 +28,6 @@ const char* kScene = R"({
   "background": 1,
   "surfaces": [{"type": "sphere", "radius": 1, "material": {"type": "lambertian", "albedo": 0.5}}]
 })";
-
-pid_t spawn(const std::vector<std::string>& args) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    std::vector<char*> argv;
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
-  return pid;
-}
-
-int waitExit(pid_t pid) {
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
-}
 
 TEST(Interrupt, PartialImageEqualsRenderOfCompletedPasses) {
   const auto dir = std::filesystem::temp_directory_path() / "verity_interrupt_test";

@@ -1,0 +1,51 @@
+#include "materials/blend.h"
+
+#include "materials/sample_util.h"
+
+namespace verity {
+
+float Blend::amount(const TextureQuery& q) const {
+  const float t = amount_.evalScalar(q);
+  return std::isfinite(t) ? std::clamp(t, 0.0f, 1.0f) : 0.0f;
+}
+
+Color3 Blend::eval(const TextureQuery& q, const Vector3f& wi, const Vector3f& wo,
+                   TransportMode mode) const {
+  const float t = amount(q);
+  Color3 f = Color3::Zero();
+  if (t < 1) f += (1 - t) * a_->eval(q, wi, wo, mode);
+  if (t > 0) f += t * b_->eval(q, wi, wo, mode);
+  return sanitize(f);
+}
+
+float Blend::pdf(const TextureQuery& q, const Vector3f& wi, const Vector3f& wo) const {
+  const float t = amount(q);
+  float p = 0;
+  if (t < 1) p += (1 - t) * a_->pdf(q, wi, wo);
+  if (t > 0) p += t * b_->pdf(q, wi, wo);
+  return sanitize(p);
+}
+
+std::optional<BsdfSample> Blend::sample(const TextureQuery& q, const Vector3f& wi, float uLobe,
+                                        const Point2f& u, TransportMode mode) const {
+  const float t = amount(q);
+  // Reuse uLobe for the chosen material's own lobe choice, rescaled to [0, 1).
+  const bool pickB = uLobe < t;
+  const float uRest = pickB ? uLobe / t : (uLobe - t) / (1 - t);
+  const Material& chosen = pickB ? *b_ : *a_;
+  std::optional<BsdfSample> s =
+      chosen.sample(q, wi, std::clamp(uRest, 0.0f, kOneMinusEpsilon), u, mode);
+  if (!s) return std::nullopt;
+  if (s->isDelta()) {
+    s->pdf *= pickB ? t : 1 - t;
+    return s;
+  }
+  return makeSample(s->wo, eval(q, wi, s->wo, mode), pdf(q, wi, s->wo), s->lobe, s->eta);
+}
+
+Color3 Blend::emitted(const TextureQuery& q, const Vector3f& w) const {
+  const float t = amount(q);
+  return (1 - t) * a_->emitted(q, w) + t * b_->emitted(q, w);
+}
+
+}  // namespace verity

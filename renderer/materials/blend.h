@@ -1,0 +1,36 @@
+// A linear blend of two materials: f = (1 − t)·f_a + t·f_b with t = `amount` (the weight
+// of b). Sampling picks b with probability t and a otherwise, so the density of a
+// non-delta direction is the mixture (1 − t)·p_a + t·p_b. A delta sample keeps the chosen
+// material's weight (its contribution t·f_b and its probability t·p_b share the factor t).
+#pragma once
+
+#include <memory>
+
+#include "materials/material.h"
+
+namespace verity {
+
+class Blend : public Material {
+ public:
+  Blend(std::shared_ptr<const Material> a, std::shared_ptr<const Material> b, TexturedColor amount)
+      : a_(std::move(a)), b_(std::move(b)), amount_(std::move(amount)) {}
+
+  Color3 eval(const TextureQuery& q, const Vector3f& wi, const Vector3f& wo,
+              TransportMode mode) const override;
+  float pdf(const TextureQuery& q, const Vector3f& wi, const Vector3f& wo) const override;
+  std::optional<BsdfSample> sample(const TextureQuery& q, const Vector3f& wi, float uLobe,
+                                   const Point2f& u, TransportMode mode) const override;
+  uint32_t lobes() const override { return a_->lobes() | b_->lobes(); }
+  Color3 emitted(const TextureQuery& q, const Vector3f& w) const override;
+  bool isEmitter() const override { return a_->isEmitter() || b_->isEmitter(); }
+  bool isTextured() const override {
+    return !amount_.isConstant() || a_->isTextured() || b_->isTextured();
+  }
+
+ private:
+  float amount(const TextureQuery& q) const;
+  std::shared_ptr<const Material> a_, b_;
+  TexturedColor amount_;
+};
+
+}  // namespace verity

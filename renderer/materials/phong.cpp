@@ -1,0 +1,45 @@
+#include "materials/phong.h"
+
+#include "core/frame.h"
+#include "materials/sample_util.h"
+
+namespace verity {
+
+namespace {
+// cos α between wo and the mirror direction of wi (equal to that of wi and the mirror of
+// wo, hence reciprocity). The lobe is zero beyond 90° from the mirror direction, also for
+// exponent 0, where cos⁰ would otherwise fill the whole sphere.
+float cosAlpha(const Vector3f& wi, const Vector3f& wo) {
+  return std::min(Vector3f(-wi.x(), -wi.y(), wi.z()).dot(wo), 1.0f);
+}
+}  // namespace
+
+Color3 Phong::eval(const TextureQuery& q, const Vector3f& wi, const Vector3f& wo,
+                   TransportMode) const {
+  const float cosA = cosAlpha(wi, wo);
+  if (wi.z() <= 0 || wo.z() <= 0 || !(cosA > 0)) return Color3::Zero();
+  const float lobe = (exponent_ + 2.0f) * kInv2Pi * std::pow(cosA, exponent_);
+  return sanitize(albedo_.eval(q) * lobe);
+}
+
+float Phong::pdf(const TextureQuery&, const Vector3f& wi, const Vector3f& wo) const {
+  const float cosA = cosAlpha(wi, wo);
+  if (wi.z() <= 0 || wo.z() <= 0 || !(cosA > 0)) return 0;
+  return sanitize((exponent_ + 1.0f) * kInv2Pi * std::pow(cosA, exponent_));
+}
+
+std::optional<BsdfSample> Phong::sample(const TextureQuery& q, const Vector3f& wi, float,
+                                        const Point2f& u, TransportMode mode) const {
+  if (wi.z() <= 0) return std::nullopt;
+  // cos α = u^(1/(n+1)) inverts the CDF of the (n+1)/(2π)·cos^n α lobe.
+  const float cosA = std::pow(std::max(u.x(), 1e-30f), 1.0f / (exponent_ + 1.0f));
+  const float sinA = safeSqrt(1.0f - cosA * cosA);
+  const float phi = 2.0f * kPi * u.y();
+  const Frame lobeFrame(Vector3f(-wi.x(), -wi.y(), wi.z()).normalized());
+  const Vector3f wo =
+      lobeFrame.toWorld(Vector3f(sinA * std::cos(phi), sinA * std::sin(phi), cosA)).normalized();
+  if (wo.z() <= 0) return std::nullopt;  // the lobe dips below the horizon
+  return makeSample(wo, eval(q, wi, wo, mode), pdf(q, wi, wo), kReflection | kGlossy);
+}
+
+}  // namespace verity

@@ -1,0 +1,49 @@
+// A rough conductor (Cook-Torrance with Walter et al. 2007's normalisation):
+// f = tint·F(wi·h)·D(h)·G2(wi, wo, h) / (4 cos θi cos θo), with a Beckmann or GGX
+// distribution and height-correlated Smith masking-shadowing.
+//
+// Two parameterisations share it:
+//  - DIRT's "beckmann" and the seed's "ggx": alpha given directly ("ab"), Fresnel of the
+//    complex index ior + i·ext, multiplied by the albedo texture as a tint.
+//  - DIRT's "metal" with roughness r > 0: GGX with α = r² (the perceptual remapping of
+//    Burley 2012, "Physically-Based Shading at Disney"), Schlick's Fresnel with F0 = albedo,
+//    so that albedo is the colour at normal incidence as for the r = 0 mirror.
+#pragma once
+
+#include "materials/material.h"
+#include "materials/microfacet.h"
+
+namespace verity {
+
+class RoughConductor : public Material {
+ public:
+  enum class FresnelModel { Complex, Schlick };
+  struct Params {
+    MicrofacetType distribution = MicrofacetType::GGX;
+    MicrofacetSampling sampling = MicrofacetSampling::Visible;
+    TexturedColor albedo{Color3::Constant(0.8f)};
+    // Roughness texture (its channel mean is read); α = roughness, or roughness² when
+    // squareRoughness.
+    TexturedColor roughness{Color3::Constant(0.5f)};
+    bool squareRoughness = false;
+    FresnelModel fresnel = FresnelModel::Complex;
+    Color3 eta = Color3::Constant(0.05f);
+    Color3 k = Color3::Constant(3.9f);
+  };
+
+  explicit RoughConductor(Params params) : p_(std::move(params)) {}
+
+  Color3 eval(const TextureQuery& q, const Vector3f& wi, const Vector3f& wo,
+              TransportMode mode) const override;
+  float pdf(const TextureQuery& q, const Vector3f& wi, const Vector3f& wo) const override;
+  std::optional<BsdfSample> sample(const TextureQuery& q, const Vector3f& wi, float uLobe,
+                                   const Point2f& u, TransportMode mode) const override;
+  uint32_t lobes() const override { return kReflection | kGlossy; }
+  bool isTextured() const override { return !p_.albedo.isConstant() || !p_.roughness.isConstant(); }
+
+ private:
+  MicrofacetDistribution distribution(const TextureQuery& q) const;
+  Params p_;
+};
+
+}  // namespace verity
