@@ -29,4 +29,79 @@ Ray Camera::generateRay(const Point2f& film, const Point2f& lens) const {
   return Ray(toWorld_.point(origin), toWorld_.vector(dir).normalized());
 }
 
+std::optional<Point2f> Camera::filmFromCameraSpace(const Point3f& lens, const Vector3f& dir) const {
+  const float cosTheta = -dir.z();
+  if (!(cosTheta > 0)) return std::nullopt;
+  // The ray crosses the plane in focus (z = −fdist; z = −1 for a pinhole, whose rays all pass
+  // through the origin) at the point generateRay aimed at; scaled back to distance 1 it is
+  // the film position on the image plane.
+  const float planeDepth = lensRadius_ > 0 ? focusDistance_ : 1.0f;
+  const Point3f onPlane = lens + dir * (planeDepth / cosTheta);
+  const float x = onPlane.x() / planeDepth, y = onPlane.y() / planeDepth;
+  const Point2f film((x / halfWidth_ + 1) * 0.5f * resolution_.x(),
+                     (1 - y / halfHeight_) * 0.5f * resolution_.y());
+  if (!(film.x() >= 0 && film.y() >= 0 && film.x() < resolution_.x() && film.y() < resolution_.y()))
+    return std::nullopt;
+  return film;
+}
+
+namespace {
+// World to camera space through the stored inverse (no copy of the transform).
+Point3f toCameraPoint(const Transform& toWorld, const Point3f& p) {
+  const Matrix4f& inv = toWorld.inverseMatrix();
+  return inv.topLeftCorner<3, 3>() * p + inv.topRightCorner<3, 1>();
+}
+Vector3f toCameraDirection(const Transform& toWorld, const Vector3f& d) {
+  return (toWorld.inverseMatrix().topLeftCorner<3, 3>() * d).normalized();
+}
+}  // namespace
+
+std::optional<Point2f> Camera::filmPosition(const Point3f& lensPoint, const Vector3f& d) const {
+  return filmFromCameraSpace(toCameraPoint(toWorld_, lensPoint), toCameraDirection(toWorld_, d));
+}
+
+float Camera::importance(const Point3f& lensPoint, const Vector3f& d, Point2f* film) const {
+  const Vector3f dir = toCameraDirection(toWorld_, d);
+  const auto position = filmFromCameraSpace(toCameraPoint(toWorld_, lensPoint), dir);
+  if (!position) return 0;
+  if (film) *film = *position;
+  const float cos2 = dir.z() * dir.z();
+  return 1.0f / (imagePlaneArea() * lensArea() * cos2 * cos2);
+}
+
+void Camera::pdfImportance(const Point3f& lensPoint, const Vector3f& d, float* pdfPos,
+                           float* pdfDir) const {
+  const Vector3f dir = toCameraDirection(toWorld_, d);
+  *pdfPos = 1.0f / lensArea();
+  const float cosTheta = -dir.z();
+  *pdfDir = 0;
+  if (!(cosTheta > 0)) return;
+  *pdfDir = 1.0f / (imagePlaneArea() * cosTheta * cosTheta * cosTheta);
+}
+
+std::optional<CameraImportanceSample> Camera::sampleImportance(const Point3f& ref,
+                                                               const Point2f& u) const {
+  Point3f lens = Point3f::Zero();
+  if (lensRadius_ > 0) {
+    const Point2f l = lensRadius_ * warp::squareToUniformDiskConcentric(u);
+    lens = Point3f(l.x(), l.y(), 0);
+  }
+  CameraImportanceSample s;
+  s.lensPoint = toWorld_.point(lens);
+  const Vector3f toLens = s.lensPoint - ref;
+  s.distance = toLens.norm();
+  if (!(s.distance > 0)) return std::nullopt;
+  s.wi = toLens / s.distance;
+  const Vector3f dir = toCameraDirection(toWorld_, -s.wi);
+  const auto film = filmFromCameraSpace(lens, dir);
+  if (!film) return std::nullopt;
+  s.film = *film;
+  const float cosTheta = -dir.z();
+  const float cos2 = cosTheta * cosTheta;
+  s.importance = 1.0f / (imagePlaneArea() * lensArea() * cos2 * cos2);
+  s.pdf = s.distance * s.distance / (cosTheta * lensArea());
+  if (!std::isfinite(s.pdf) || !std::isfinite(s.importance)) return std::nullopt;
+  return s;
+}
+
 }  // namespace verity

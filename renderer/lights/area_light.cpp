@@ -1,5 +1,8 @@
 #include "lights/area_light.h"
 
+#include "core/frame.h"
+#include "sampling/warp.h"
+
 namespace verity {
 
 std::optional<LightSample> AreaLight::sampleLi(const Point3f& ref, const Point2f& u) const {
@@ -20,6 +23,27 @@ std::optional<LightSample> AreaLight::sampleLi(const Point3f& ref, const Point2f
 
 float AreaLight::pdfLi(const Point3f& ref, const Point3f& p, const Normal3f& n) const {
   return shape_.pdfSolidAngle(ref, p, n);
+}
+
+std::optional<LightEmission> AreaLight::sampleLe(const Point2f& uPos, const Point2f& uDir,
+                                                 const Point3f&, float) const {
+  const ShapeSample s = shape_.sampleArea(uPos);
+  const Vector3f local = warp::squareToCosineHemisphere(uDir);
+  if (!(local.z() > 0) || !(s.pdf > 0)) return std::nullopt;
+  LightEmission e;
+  e.p = s.p;
+  e.n = s.n;
+  e.d = Frame(s.n).toWorld(local).normalized();
+  e.pdfPos = s.pdf;
+  e.pdfDir = warp::squareToCosineHemispherePdf(local);
+  e.radiance = radiance(s.n, e.d);
+  if (isBlack(e.radiance) || !(e.pdfDir > 0)) return std::nullopt;
+  return e;
+}
+
+void AreaLight::pdfLe(const Normal3f& n, const Vector3f& w, float* pdfPos, float* pdfDir) const {
+  *pdfPos = 1.0f / shape_.area();
+  *pdfDir = std::max(0.0f, n.dot(w)) * kInvPi;
 }
 
 }  // namespace verity

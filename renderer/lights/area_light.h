@@ -17,6 +17,14 @@ class AreaLight : public Light {
   Color3 radiance(const Normal3f& n, const Vector3f& w) const {
     return n.dot(w) > 0 ? radiance_ : Color3::Zero();
   }
+  // Emission for light subpaths: a point uniform by area, a cosine-distributed direction on
+  // the front side.
+  std::optional<LightEmission> sampleLe(const Point2f& uPos, const Point2f& uDir,
+                                        const Point3f& sceneCenter,
+                                        float sceneRadius) const override;
+  // Densities of sampleLe choosing a point (per area) and direction w there (per solid angle;
+  // 0 behind the front normal n).
+  void pdfLe(const Normal3f& n, const Vector3f& w, float* pdfPos, float* pdfDir) const;
   Color3 power(float sceneRadius) const override { return radiance_ * kPi * shape_.area(); }
   const Shape& shape() const { return shape_; }
 

@@ -1,5 +1,6 @@
 #include "lights/environment_light.h"
 
+#include "core/frame.h"
 #include "sampling/warp.h"
 
 namespace verity {
@@ -84,6 +85,31 @@ float EnvironmentLight::pdfLi(const Vector3f& d) const {
 
 Color3 EnvironmentLight::power(float sceneRadius) const {
   return average_ * (4 * kPi) * (kPi * sceneRadius * sceneRadius);
+}
+
+std::optional<LightEmission> EnvironmentLight::sampleLe(const Point2f& uPos, const Point2f& uDir,
+                                                        const Point3f& sceneCenter,
+                                                        float sceneRadius) const {
+  const auto li = sampleLi(sceneCenter, uDir);
+  if (!li) return std::nullopt;
+  const Frame frame(li->wi);
+  const Point2f disk = warp::squareToUniformDiskConcentric(uPos);
+  LightEmission e;
+  e.atInfinity = true;
+  e.d = -li->wi;
+  e.n = e.d;
+  e.p = sceneCenter + sceneRadius * (li->wi + frame.s * disk.x() + frame.t * disk.y());
+  e.radiance = li->radiance;
+  e.pdfDir = li->pdf;
+  e.pdfPos = 1.0f / (kPi * sceneRadius * sceneRadius);
+  if (!(e.pdfPos > 0) || !std::isfinite(e.pdfPos)) return std::nullopt;
+  return e;
+}
+
+void EnvironmentLight::pdfLe(const Vector3f& towardsEnvironment, float sceneRadius, float* pdfPos,
+                             float* pdfDir) const {
+  *pdfPos = 1.0f / (kPi * sceneRadius * sceneRadius);
+  *pdfDir = pdfLi(towardsEnvironment);
 }
 
 }  // namespace verity

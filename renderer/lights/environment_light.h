@@ -19,6 +19,17 @@ class EnvironmentLight : public Light {
   Color3 radiance(const Vector3f& d) const;
   std::optional<LightSample> sampleLi(const Point3f& ref, const Point2f& u) const override;
   float pdfLi(const Vector3f& d) const;
+  // Emission for light subpaths: a direction towards the environment chosen as sampleLi
+  // does (so both strategies share one directional density), then a parallel ray travelling
+  // back into the scene from a disk of radius sceneRadius, perpendicular to it, centred on
+  // sceneCenter + sceneRadius · direction (pbrt-v3 §16.1.5).
+  std::optional<LightEmission> sampleLe(const Point2f& uPos, const Point2f& uDir,
+                                        const Point3f& sceneCenter,
+                                        float sceneRadius) const override;
+  // Densities of sampleLe for the ray arriving from direction `towardsEnvironment`: per area
+  // on the disk, per solid angle of the direction.
+  void pdfLe(const Vector3f& towardsEnvironment, float sceneRadius, float* pdfPos,
+             float* pdfDir) const;
   Color3 power(float sceneRadius) const override;
   bool isInfinite() const override { return true; }
   bool isBlackEverywhere() const { return !image_ && isBlack(constant_); }

@@ -17,6 +17,20 @@ struct LightSample {
   bool atInfinity = false;
 };
 
+// A ray leaving a light, the start of a light subpath (Veach 1997, §10.2): its origin, its
+// direction of travel and the densities of both. Area lights emit from their front side
+// only, cosine-distributed; the environment emits parallel rays from a disk of the scene's
+// bounding radius, perpendicular to the direction, placed outside the scene.
+struct LightEmission {
+  Point3f p = Point3f::Zero();       // origin
+  Normal3f n = Normal3f::UnitZ();    // emitter normal (the direction of travel at infinity)
+  Vector3f d = Vector3f::UnitZ();    // unit direction of travel
+  Color3 radiance = Color3::Zero();  // Le carried along d
+  float pdfPos = 0;                  // per area: on the shape, or on the disk (environment)
+  float pdfDir = 0;                  // per solid angle
+  bool atInfinity = false;
+};
+
 class Light {
  public:
   virtual ~Light() = default;
@@ -24,6 +38,11 @@ class Light {
   // Total emitted power (for choosing among lights); needs the scene's bounding radius.
   virtual Color3 power(float sceneRadius) const = 0;
   virtual bool isInfinite() const { return false; }
+  // Samples an emitted ray: `uPos` chooses the origin, `uDir` the direction. The scene's
+  // bounding sphere (center, radius) places the environment's emitting disk.
+  virtual std::optional<LightEmission> sampleLe(const Point2f& uPos, const Point2f& uDir,
+                                                const Point3f& sceneCenter,
+                                                float sceneRadius) const = 0;
 
   size_t index = 0;  // position in the scene's light list, set by the scene
 };

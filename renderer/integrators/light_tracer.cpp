@@ -1,0 +1,22 @@
+#include "integrators/light_tracer.h"
+
+#include "integrators/bdpt_connect.h"
+#include "integrators/bdpt_subpath.h"
+
+namespace verity {
+
+Color3 LightTracer::Li(const Scene& scene, Sampler& sampler, const Ray&,
+                       SampleContext& context) const {
+  thread_local std::vector<PathVertex> light;
+  traceLightSubpath(scene, sampler, maxBounces_ + 1, light, context.stats);
+  const Vector2i& resolution = scene.camera().resolution();
+  for (int s = 1; s <= static_cast<int>(light.size()); ++s) {
+    PathVertex lens;
+    Point2f film;
+    const Color3 c = cameraContribution(scene, sampler, light, s, lens, film, context.stats);
+    if (!isBlack(c)) context.splat(film, resolution, c);
+  }
+  return Color3::Zero();
+}
+
+}  // namespace verity
