@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "app/component_output.h"
 #include "film/image_io.h"
 #include "render/interrupt.h"
 #include "render/renderer.h"
@@ -22,6 +23,8 @@ struct RenderArgs {
   std::string output;
   bool variance = false;
   bool explain = false;
+  std::string strategies;   // directory for per-strategy images (bdpt)
+  std::string pathLengths;  // directory for per-path-length images
 };
 
 std::string lowerExtension(const std::filesystem::path& p) {
@@ -55,9 +58,19 @@ int run(const RenderArgs& args) {
     outputs = {args.output};
   }
 
+  const Vector2i& resolution = file.scene->camera().resolution();
+  const bool splitsStrategies = !args.strategies.empty();
+  const std::string componentOption = splitsStrategies ? "--strategies" : "--path-lengths";
+  const std::filesystem::path componentDir = splitsStrategies ? args.strategies : args.pathLengths;
+  std::unique_ptr<ComponentImages> components;
+  if (!componentDir.empty())
+    components = makeComponentImages(componentOption, settings.type, settings.maxBounces,
+                                     resolution, componentDir);
+
   const auto integrator = makeIntegrator(settings);
-  Film film(file.scene->camera().resolution());
+  Film film(resolution);
   RenderOptions options;
+  options.components = components.get();
   options.samplesPerPixel = args.spp > 0 ? args.spp : file.sampler->samplesPerPixel();
   options.threads = args.threads;
   options.seed = args.seed;
@@ -83,6 +96,11 @@ int run(const RenderArgs& args) {
     else
       writePng(out, image);
   }
+  if (components) {
+    const RenderRecord record{args.scene,   settings.type, settings.maxBounces,
+                              stats.passes, args.seed,     stats.interrupted};
+    writeComponentImages(componentDir, *components, record, image.attributes);
+  }
 
   const double seconds = std::max(stats.seconds, 1e-9);
   fmt::print(stderr,
@@ -95,6 +113,9 @@ int run(const RenderArgs& args) {
                "the scene has no emitter and a black background: the image is black and "
                "no ray was traced\n");
   for (const auto& out : outputs) fmt::print(stderr, "wrote {}\n", out.string());
+  if (components)
+    fmt::print(stderr, "wrote {} images and manifest.json to {}\n", components->layout().size(),
+               componentDir.string());
   if (stats.interrupted) {
     fmt::print(stderr,
                "interrupted: the image is PARTIAL, {} of {} samples per pixel (every pixel has "
@@ -117,7 +138,8 @@ void addRenderCommand(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--seed", args->seed, "Seed of the render's random numbers");
   cmd->add_option("--integrator", args->integrator,
-                  "normals, ao, path_tracer_mats, path_tracer_nee or path_tracer_mis");
+                  "normals, ao, path_tracer_mats, path_tracer_nee, path_tracer_mis, bdpt or "
+                  "light_tracer");
   cmd->add_option("--max-bounces", args->maxBounces,
                   "Maximum scattering events per path (0: emitters seen directly)")
       ->check(CLI::NonNegativeNumber);
@@ -125,6 +147,13 @@ void addRenderCommand(CLI::App& app) {
                   "Output .exr or .png (default: <scene name>.exr and .png here)");
   cmd->add_flag("--variance", args->variance,
                 "Add variance.R/G/B (per-sample variance) and samples channels to the EXR");
+  auto* strategies = cmd->add_option(
+      "--strategies", args->strategies,
+      "Directory for the MIS-weighted and unweighted image of every BDPT strategy (s, t) and "
+      "a manifest.json (bdpt only)");
+  cmd->add_option("--path-lengths", args->pathLengths,
+                  "Directory for one image per path length (bounces) and a manifest.json")
+      ->excludes(strategies);
   cmd->add_flag("--explain", args->explain,
                 "Print what the scene calls for (emitters, lobes, textures, strategies) and exit");
   cmd->callback([args] { throw CLI::RuntimeError(run(*args)); });

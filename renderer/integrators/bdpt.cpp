@@ -102,12 +102,19 @@ Color3 Bdpt::Li(const Scene& scene, Sampler& sampler, const Ray& ray,
   const int nCamera = static_cast<int>(camera.size()), nLight = static_cast<int>(light.size());
 
   Color3 L = Color3::Zero();
+  // Adds strategy (s, t)'s contribution `c`, weighted with the densities now in `mis`.
+  const auto add = [&](int s, int t, const Color3& c) {
+    if (s == dropped_.s && t == dropped_.t) return;
+    const Color3 weighted = c * bdptMisWeight(mis, t, misPower_);
+    L += weighted;
+    if (context.components) context.components->addStrategy(s, t, weighted, c);
+  };
   // s = 0: emission found by the camera subpath.
   for (int t = 2; t <= nCamera; ++t) {
     const Color3 c = emissionContribution(camera, t);
     if (isBlack(c)) continue;
     fillDensities(scene, FullPath{camera, light, 0, t}, lightNextEventPdf, mis);
-    L += c * bdptMisWeight(mis, t, misPower_);
+    add(0, t, c);
   }
   // s = 1: next-event estimation.
   for (int t = 2; t <= std::min(nCamera, maxVertices - 1); ++t) {
@@ -117,7 +124,7 @@ Color3 Bdpt::Li(const Scene& scene, Sampler& sampler, const Ray& ray,
     FullPath path{camera, light, 1, t};
     path.sampledLight = &sampled;
     fillDensities(scene, path, lightNextEventPdf, mis);
-    L += c * bdptMisWeight(mis, t, misPower_);
+    add(1, t, c);
   }
   // s ≥ 2, t ≥ 2: edges between the subpaths.
   for (int t = 2; t <= nCamera; ++t)
@@ -125,7 +132,7 @@ Color3 Bdpt::Li(const Scene& scene, Sampler& sampler, const Ray& ray,
       const Color3 c = edgeContribution(scene, camera, t, light, s, context.stats);
       if (isBlack(c)) continue;
       fillDensities(scene, FullPath{camera, light, s, t}, lightNextEventPdf, mis);
-      L += c * bdptMisWeight(mis, t, misPower_);
+      add(s, t, c);
     }
   // t = 1: light subpath vertices connected to the lens, splatted where they land.
   const Vector2i& resolution = scene.camera().resolution();
@@ -133,11 +140,13 @@ Color3 Bdpt::Li(const Scene& scene, Sampler& sampler, const Ray& ray,
     PathVertex sampled;
     Point2f film;
     const Color3 c = cameraContribution(scene, sampler, light, s, sampled, film, context.stats);
-    if (isBlack(c)) continue;
+    if (isBlack(c) || (s == dropped_.s && dropped_.t == 1)) continue;
     FullPath path{camera, light, s, 1};
     path.sampledCamera = &sampled;
     fillDensities(scene, path, lightNextEventPdf, mis);
-    context.splat(film, resolution, c * bdptMisWeight(mis, 1, misPower_));
+    const Color3 weighted = c * bdptMisWeight(mis, 1, misPower_);
+    context.splat(film, resolution, weighted);
+    if (context.components) context.components->splatStrategy(s, film, weighted, c);
   }
   return L;
 }

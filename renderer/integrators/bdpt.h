@@ -22,15 +22,24 @@
 
 namespace verity {
 
+// A strategy: s light subpath vertices and t camera subpath vertices.
+struct BdptStrategy {
+  int s = -1, t = -1;
+};
+
 class Bdpt : public Integrator {
  public:
-  Bdpt(int maxBounces, float misPower) : maxBounces_(maxBounces), misPower_(misPower) {}
+  // `dropped`, a test hook, names a strategy whose contribution is left out (the default names
+  // none): the tests that compare BDPT with path tracing must then fail.
+  Bdpt(int maxBounces, float misPower, BdptStrategy dropped = {})
+      : maxBounces_(maxBounces), misPower_(misPower), dropped_(dropped) {}
   Color3 Li(const Scene& scene, Sampler& sampler, const Ray& ray,
             SampleContext& context) const override;
 
  private:
   int maxBounces_;
   float misPower_;
+  BdptStrategy dropped_;
 };
 
 }  // namespace verity

@@ -2,10 +2,12 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/ray.h"
+#include "integrators/component_recorder.h"
 #include "sampling/sampler.h"
 #include "scene/scene.h"
 
@@ -24,11 +26,20 @@ struct Splat {
   Color3 value;
 };
 
+// The pixel containing film position `film` (in pixels), or none outside the image.
+inline std::optional<Point2i> filmPixel(const Point2f& film, const Vector2i& resolution) {
+  const int x = static_cast<int>(std::floor(film.x())), y = static_cast<int>(std::floor(film.y()));
+  if (x < 0 || y < 0 || x >= resolution.x() || y >= resolution.y()) return std::nullopt;
+  return Point2i(x, y);
+}
+
 // What one camera sample may write besides its own radiance.
 struct SampleContext {
   PathStats stats;
   std::vector<Splat> splats;
   uint64_t invalidSplats = 0;  // NaN or Inf splats, dropped
+  // The parts of the estimate to record (--strategies, --path-lengths); null: none.
+  ComponentRecorder* components = nullptr;
 
   // `film` is a position in pixels; positions outside the image are dropped. The value is
   // this sample's estimate for that pixel (it is added to the pixel's sample of this pass).
@@ -37,10 +48,8 @@ struct SampleContext {
       ++invalidSplats;
       return;
     }
-    const int x = static_cast<int>(std::floor(film.x())),
-              y = static_cast<int>(std::floor(film.y()));
-    if (x < 0 || y < 0 || x >= resolution.x() || y >= resolution.y() || isBlack(value)) return;
-    splats.push_back({Point2i(x, y), value});
+    const auto pixel = filmPixel(film, resolution);
+    if (pixel && !isBlack(value)) splats.push_back({*pixel, value});
   }
 };
 

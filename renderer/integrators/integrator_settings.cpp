@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "integrators/ambient_occlusion.h"
-#include "integrators/bdpt.h"
 #include "integrators/light_tracer.h"
 #include "integrators/normals.h"
 #include "integrators/path_tracer.h"
@@ -47,7 +46,8 @@ std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s) {
     return std::make_unique<PathTracer>(PathTracer::Strategy::Materials, s.maxBounces, 1);
   if (s.type == "path_tracer_nee")
     return std::make_unique<PathTracer>(PathTracer::Strategy::NextEvent, s.maxBounces, 1);
-  if (s.type == "bdpt") return std::make_unique<Bdpt>(s.maxBounces, s.misPower);
+  if (s.type == "bdpt")
+    return std::make_unique<Bdpt>(s.maxBounces, s.misPower, s.bdptDroppedStrategy);
   if (s.type == "light_tracer") return std::make_unique<LightTracer>(s.maxBounces);
   return std::make_unique<PathTracer>(PathTracer::Strategy::Mis, s.maxBounces, s.misPower);
 }

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "integrators/integrator.h"
+#include "integrators/bdpt.h"
 #include "scene/json_node.h"
 
 namespace verity {
@@ -17,6 +17,8 @@ struct IntegratorSettings {
   int maxBounces = 64;
   float misPower = 1;            // 1: balance heuristic, 2: power heuristic
   float aoDistance = kInfinity;  // occlusion radius for "ao"
+  // Test hook, never read from a scene: a BDPT strategy whose contribution is left out.
+  BdptStrategy bdptDroppedStrategy;
 };
 
 // Canonical name of an integrator type in any accepted spelling, or "" when unknown.

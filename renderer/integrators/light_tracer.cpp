@@ -14,7 +14,10 @@ Color3 LightTracer::Li(const Scene& scene, Sampler& sampler, const Ray&,
     PathVertex lens;
     Point2f film;
     const Color3 c = cameraContribution(scene, sampler, light, s, lens, film, context.stats);
-    if (!isBlack(c)) context.splat(film, resolution, c);
+    if (isBlack(c)) continue;
+    context.splat(film, resolution, c);
+    // Strategy (s, 1) alone: its weight is one.
+    if (context.components) context.components->splatStrategy(s, film, c, c);
   }
   return Color3::Zero();
 }

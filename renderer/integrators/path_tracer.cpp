@@ -56,6 +56,11 @@ Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay
   float bsdfPdf = 0;
   Point3f previous = ray.o;
   const bool samplesLights = strategy_ != Strategy::Materials;
+  // Adds the contribution of paths with `bounces` bounces.
+  const auto add = [&](int bounces, const Color3& c) {
+    L += c;
+    if (context.components) context.components->addPathLength(bounces, c);
+  };
 
   for (int bounce = 0;; ++bounce) {
     SurfaceInteraction si;
@@ -63,7 +68,8 @@ Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay
     if (!scene.intersect(ray, si)) {
       if (const EnvironmentLight* bg = scene.background()) {
         const float lightPdf = lightSampledBefore ? scene.lightPmf(bg) * bg->pdfLi(ray.d) : 0;
-        L += beta * bg->radiance(ray.d) * emissionWeight(lightSampledBefore, bsdfPdf, lightPdf);
+        add(bounce,
+            beta * bg->radiance(ray.d) * emissionWeight(lightSampledBefore, bsdfPdf, lightPdf));
       }
       break;
     }
@@ -73,14 +79,14 @@ Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay
         const float lightPdf =
             lightSampledBefore ? scene.lightPmf(si.light) * si.light->pdfLi(previous, si.p, si.ng)
                                : 0;
-        L += beta * Le * emissionWeight(lightSampledBefore, bsdfPdf, lightPdf);
+        add(bounce, beta * Le * emissionWeight(lightSampledBefore, bsdfPdf, lightPdf));
       }
     }
     if (bounce >= maxBounces_ || si.material->lobes() == kNoLobe) break;
 
     const Vector3f wi = si.toLocal(-ray.d);
     const bool canSampleLights = samplesLights && si.material->hasNonDeltaLobe();
-    if (canSampleLights) L += beta * sampleLight(scene, sampler, si, wi, context);
+    if (canSampleLights) add(bounce + 1, beta * sampleLight(scene, sampler, si, wi, context));
 
     const float uLobe = sampler.next1D();
     const auto bs = si.material->sample(si.textureQuery(), wi, uLobe, sampler.next2D(),

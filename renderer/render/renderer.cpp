@@ -33,6 +33,7 @@ RenderStats render(const Scene& scene, const Integrator& integrator, const Sampl
   if (integrator.needsEmitters() && !scene.summary().hasEmitters()) {
     // Nothing can carry light: the image is exactly black.
     film.addZeroSamples(static_cast<uint32_t>(spp));
+    if (options.components) options.components->addZeroSamples(static_cast<uint32_t>(spp));
     stats.passes = spp;
     stats.samples = uint64_t(spp) * film.width() * film.height();
     stats.tracedNoRays = true;
@@ -64,16 +65,19 @@ RenderStats render(const Scene& scene, const Integrator& integrator, const Sampl
       stats.interrupted = true;
       break;
     }
+    if (options.components) options.components->startPass(tiles.size());
     arena.execute([&] {
       tbb::parallel_for(size_t(0), tiles.size(), [&](size_t t) {
         const Tile& tile = tiles[t];
         SampleContext& context = contexts[t];
         context.splats.clear();
+        if (options.components) context.components = &options.components->recorder(t);
         auto sampler = prototype.clone();
         sampler->setSamplesPerPixel(spp);
         for (int y = tile.y0; y < tile.y1; ++y) {
           for (int x = tile.x0; x < tile.x1; ++x) {
             sampler->startPixelSample(Point2i(x, y), pass);
+            if (context.components) context.components->startPixel(Point2i(x, y));
             const Point2f filmPosition = Point2f(x, y) + sampler->next2D();
             const Ray ray = camera.generateRay(filmPosition, sampler->next2D());
             const Color3 L = integrator.Li(scene, *sampler, ray, context);
@@ -97,6 +101,7 @@ RenderStats render(const Scene& scene, const Integrator& integrator, const Sampl
         else
           film.addInvalidSample(x, y);
       }
+    if (options.components) options.components->finishPass(passValid);
     stats.passes = pass + 1;
   }
   progress.finish();

@@ -8,6 +8,7 @@
 
 #include "film/film.h"
 #include "integrators/integrator.h"
+#include "render/component_images.h"
 
 namespace verity {
 
@@ -17,6 +18,8 @@ struct RenderOptions {
   uint64_t seed = 0;
   bool progress = false;
   const std::atomic<bool>* cancel = nullptr;  // checked between passes
+  // Per-strategy or per-path-length images to fill besides the film; null: none.
+  ComponentImages* components = nullptr;
 };
 
 struct RenderStats {

@@ -16,46 +16,9 @@
 namespace verity {
 namespace {
 
+using bdpt_test::cornellBox;
 using bdpt_test::estimateRegions;
 using bdpt_test::RegionEstimate;
-
-// Cornell box of side 555 with two spheres of materials `a` (left, back) and `b` (right,
-// front), 32×32 pixels.
-std::string cornellBox(const std::string& a, const std::string& b, const std::string& extra) {
-  return R"({
-  "camera": {"transform": {"from": [0, 20, 1077.5], "at": [0, -4, 0], "up": [0, 1, 0]},
-             "vfov": 40, "resolution": [32, 32]},
-  "sampler": {"type": "independent"},)" +
-         extra + R"(
-  "materials": [
-    {"name": "white", "type": "lambertian", "albedo": 0.73},
-    {"name": "red", "type": "lambertian", "albedo": [0.65, 0.05, 0.05]},
-    {"name": "green", "type": "lambertian", "albedo": [0.12, 0.45, 0.15]},
-    {"name": "light", "type": "diffuse light", "emit": 15},
-    {"name": "a", )" +
-         a + R"(},
-    {"name": "b", )" +
-         b + R"(}
-  ],
-  "surfaces": [
-    {"type": "quad", "size": 555, "material": "white",
-     "transform": [{"axis": [1, 0, 0], "angle": -90}, {"translate": [0, -277.5, 0]}]},
-    {"type": "quad", "size": 555, "material": "white",
-     "transform": [{"axis": [1, 0, 0], "angle": 90}, {"translate": [0, 277.5, 0]}]},
-    {"type": "quad", "size": 555, "material": "white", "transform": {"translate": [0, 0, -277.5]}},
-    {"type": "quad", "size": 555, "material": "red",
-     "transform": [{"axis": [0, 1, 0], "angle": 90}, {"translate": [-277.5, 0, 0]}]},
-    {"type": "quad", "size": 555, "material": "green",
-     "transform": [{"axis": [0, 1, 0], "angle": -90}, {"translate": [277.5, 0, 0]}]},
-    {"type": "quad", "size": 130, "material": "light",
-     "transform": [{"axis": [1, 0, 0], "angle": 90}, {"translate": [0, 277, 0]}]},
-    {"type": "sphere", "radius": 100, "transform": {"translate": [-140, -177.5, -100]},
-     "material": "a"},
-    {"type": "sphere", "radius": 100, "transform": {"translate": [140, -177.5, 100]},
-     "material": "b"}
-  ]
-})";
-}
 
 // Regions: 0 pixels that see only non-delta surfaces (no sphere and no background within
 // one pixel: the light tracer sees neither delta surfaces nor the background directly),
