@@ -104,7 +104,7 @@ Color3 Bdpt::Li(const Scene& scene, Sampler& sampler, const Ray& ray,
   Color3 L = Color3::Zero();
   // Adds strategy (s, t)'s contribution `c`, weighted with the densities now in `mis`.
   const auto add = [&](int s, int t, const Color3& c) {
-    if (s == dropped_.s && t == dropped_.t) return;
+    if (isDropped(s, t)) return;
     const Color3 weighted = c * bdptMisWeight(mis, t, misPower_);
     L += weighted;
     if (context.components) context.components->addStrategy(s, t, weighted, c);
@@ -140,7 +140,7 @@ Color3 Bdpt::Li(const Scene& scene, Sampler& sampler, const Ray& ray,
     PathVertex sampled;
     Point2f film;
     const Color3 c = cameraContribution(scene, sampler, light, s, sampled, film, context.stats);
-    if (isBlack(c) || (s == dropped_.s && dropped_.t == 1)) continue;
+    if (isBlack(c) || isDropped(s, 1)) continue;
     FullPath path{camera, light, s, 1};
     path.sampledCamera = &sampled;
     fillDensities(scene, path, lightNextEventPdf, mis);

@@ -37,6 +37,8 @@ class Bdpt : public Integrator {
             SampleContext& context) const override;
 
  private:
+  bool isDropped(int s, int t) const { return s == dropped_.s && t == dropped_.t; }
+
   int maxBounces_;
   float misPower_;
   BdptStrategy dropped_;
