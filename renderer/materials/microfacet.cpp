@@ -85,7 +85,9 @@ Vector3f MicrofacetDistribution::sampleNormal(const Vector3f& wi, Point2f u) con
   const float tan2 =
       type_ == MicrofacetType::GGX ? a2 * u.x() / (1.0f - u.x()) : -a2 * std::log(1.0f - u.x());
   const float cosTheta = 1.0f / std::sqrt(1.0f + tan2);
-  const float sinTheta = safeSqrt(1.0f - cosTheta * cosTheta);
+  // tan θ · cos θ, not √(1 − cos²θ): below θ ≈ 3e-4 cos θ rounds to 1 and the cancellation
+  // would put the normal exactly on the pole, all of them at α = 1e-4.
+  const float sinTheta = std::sqrt(tan2) * cosTheta;
   const float phi = 2.0f * kPi * u.y();
   return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
 }
