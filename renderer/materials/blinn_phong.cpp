@@ -2,6 +2,7 @@
 
 #include "materials/fresnel.h"
 #include "materials/sample_util.h"
+#include "sampling/warp.h"
 
 namespace verity {
 
@@ -26,10 +27,7 @@ float BlinnPhong::pdf(const TextureQuery&, const Vector3f& wi, const Vector3f& w
 std::optional<BsdfSample> BlinnPhong::sample(const TextureQuery& q, const Vector3f& wi, float,
                                              const Point2f& u, TransportMode mode) const {
   if (wi.z() <= 0) return std::nullopt;
-  const float cosH = std::pow(std::max(u.x(), 1e-30f), 1.0f / (exponent_ + 1.0f));
-  const float sinH = safeSqrt(1.0f - cosH * cosH);
-  const float phi = 2.0f * kPi * u.y();
-  const Vector3f h(sinH * std::cos(phi), sinH * std::sin(phi), cosH);
+  const Vector3f h = warp::squareToPowerCosineLobe(u, exponent_);
   if (wi.dot(h) <= 0) return std::nullopt;  // reflects below the horizon
   const Vector3f wo = reflect(wi, h).normalized();
   if (wo.z() <= 0) return std::nullopt;

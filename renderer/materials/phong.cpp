@@ -2,6 +2,7 @@
 
 #include "core/frame.h"
 #include "materials/sample_util.h"
+#include "sampling/warp.h"
 
 namespace verity {
 
@@ -31,13 +32,8 @@ float Phong::pdf(const TextureQuery&, const Vector3f& wi, const Vector3f& wo) co
 std::optional<BsdfSample> Phong::sample(const TextureQuery& q, const Vector3f& wi, float,
                                         const Point2f& u, TransportMode mode) const {
   if (wi.z() <= 0) return std::nullopt;
-  // cos α = u^(1/(n+1)) inverts the CDF of the (n+1)/(2π)·cos^n α lobe.
-  const float cosA = std::pow(std::max(u.x(), 1e-30f), 1.0f / (exponent_ + 1.0f));
-  const float sinA = safeSqrt(1.0f - cosA * cosA);
-  const float phi = 2.0f * kPi * u.y();
   const Frame lobeFrame(Vector3f(-wi.x(), -wi.y(), wi.z()).normalized());
-  const Vector3f wo =
-      lobeFrame.toWorld(Vector3f(sinA * std::cos(phi), sinA * std::sin(phi), cosA)).normalized();
+  const Vector3f wo = lobeFrame.toWorld(warp::squareToPowerCosineLobe(u, exponent_)).normalized();
   if (wo.z() <= 0) return std::nullopt;  // the lobe dips below the horizon
   return makeSample(wo, eval(q, wi, wo, mode), pdf(q, wi, wo), kReflection | kGlossy);
 }

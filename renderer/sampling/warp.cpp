@@ -2,10 +2,20 @@
 
 namespace verity::warp {
 
+namespace {
+// r·(cos φ, sin φ) with r ≤ 1 can land an ulp outside the unit circle; pull it back (by one
+// more ulp, since rounding the quotient may undo it) so that every sample lies in the pdf's
+// support, judged exactly.
+Point2f onDisk(float r, float phi) {
+  const Point2f p(r * std::cos(phi), r * std::sin(phi));
+  const double n2 = p.cast<double>().squaredNorm();
+  if (n2 <= 1) return p;
+  return p * float((1 - 0x1p-23) / std::sqrt(n2));
+}
+}  // namespace
+
 Point2f squareToUniformDiskPolar(const Point2f& u) {
-  const float r = std::sqrt(u.x());
-  const float phi = 2 * kPi * u.y();
-  return {r * std::cos(phi), r * std::sin(phi)};
+  return onDisk(std::sqrt(u.x()), 2 * kPi * u.y());
 }
 
 Point2f squareToUniformDiskConcentric(const Point2f& u) {
@@ -19,7 +29,14 @@ Point2f squareToUniformDiskConcentric(const Point2f& u) {
     r = offset.y();
     theta = kPi / 2 - (kPi / 4) * (offset.x() / offset.y());
   }
-  return {r * std::cos(theta), r * std::sin(theta)};
+  return onDisk(r, theta);
+}
+
+Vector3f squareToPowerCosineLobe(const Point2f& u, float exponent) {
+  const float oneMinusCos = -std::expm1(std::log(std::max(u.x(), 1e-30f)) / (exponent + 1.0f));
+  const float sinTheta = safeSqrt(oneMinusCos * (2.0f - oneMinusCos));
+  const float phi = 2 * kPi * u.y();
+  return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), 1.0f - oneMinusCos};
 }
 
 Vector3f squareToUniformSphere(const Point2f& u) {

@@ -9,6 +9,9 @@ namespace verity::warp {
 // (Shirley and Chiu 1997, "A Low Distortion Map Between Disk and Square").
 Point2f squareToUniformDiskPolar(const Point2f& u);
 Point2f squareToUniformDiskConcentric(const Point2f& u);
+// The lobe (n+1)/(2π)·cos^n θ about +z (Phong's lobe, Blinn–Phong's half-vector): cos θ =
+// u^(1/(n+1)), with 1 − cos θ taken through expm1 so that sharp lobes keep sin θ's precision.
+Vector3f squareToPowerCosineLobe(const Point2f& u, float exponent);
 inline float squareToUniformDiskPdf(const Point2f& p) {
   return p.squaredNorm() <= 1 ? kInvPi : 0;
 }
