@@ -1,12 +1,23 @@
-# verity_discover_tests(TARGET LABELS label...): registers a GoogleTest executable's tests
-# with CTest and gives every discovered test all the labels. Labels are set after discovery
-# because CMake 3.25's gtest discovery flattens list values passed through PROPERTIES
-# (`LABELS "quick;renderer"` would keep only "quick").
+# verity_discover_tests(TARGET [NAME name] [PREFIX prefix] [FILTER gtest-filter] LABELS label...):
+# registers a GoogleTest executable's tests (those FILTER selects) with CTest and gives every
+# discovered test all the labels. NAME tells apart several registrations of one target.
+# Labels are set after discovery because CMake 3.25's gtest discovery flattens list values
+# passed through PROPERTIES (`LABELS "quick;renderer"` would keep only "quick").
 function(verity_discover_tests target)
-  cmake_parse_arguments(ARG "" "" "LABELS" ${ARGN})
-  gtest_discover_tests(${target} DISCOVERY_TIMEOUT 120 TEST_LIST ${target}_TESTS)
+  cmake_parse_arguments(ARG "" "NAME;PREFIX;FILTER" "LABELS" ${ARGN})
+  if(NOT ARG_NAME)
+    set(ARG_NAME ${target})
+  endif()
+  set(options)
+  if(ARG_PREFIX)
+    list(APPEND options TEST_PREFIX ${ARG_PREFIX})
+  endif()
+  if(ARG_FILTER)
+    list(APPEND options TEST_FILTER ${ARG_FILTER})
+  endif()
+  gtest_discover_tests(${target} ${options} DISCOVERY_TIMEOUT 120 TEST_LIST ${ARG_NAME}_TESTS)
   list(JOIN ARG_LABELS ";" labels)
-  set(file ${CMAKE_CURRENT_BINARY_DIR}/${target}_labels.cmake)
-  file(WRITE ${file} "set_tests_properties(\${${target}_TESTS} PROPERTIES LABELS \"${labels}\")\n")
+  set(file ${CMAKE_CURRENT_BINARY_DIR}/${ARG_NAME}_labels.cmake)
+  file(WRITE ${file} "set_tests_properties(\${${ARG_NAME}_TESTS} PROPERTIES LABELS \"${labels}\")\n")
   set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${file})
 endfunction()

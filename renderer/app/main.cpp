@@ -9,6 +9,7 @@
 #include "app/render_command.h"
 #include "app/report_command.h"
 #include "app/study_command.h"
+#include "chi2/chi2_command.h"
 #include "core/error.h"
 
 int main(int argc, char** argv) {
@@ -20,6 +21,7 @@ int main(int argc, char** argv) {
   verity::addReferenceCommand(app);
   verity::addStudyCommand(app);
   verity::addReportCommand(app);
+  verity::addChi2Command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -2,6 +2,8 @@
 // front side +z. Embree's quad primitive.
 #pragma once
 
+#include <array>
+
 #include "core/transform.h"
 #include "shapes/shape.h"
 
@@ -18,6 +20,10 @@ class Quad : public Shape {
   float area() const override { return area_; }
   ShapeSample sampleArea(const Point2f& u) const override;
   size_t primitiveCount() const override { return 1; }
+  // The corners in order around the boundary.
+  std::array<Point3f, 4> corners() const {
+    return {corner_, corner_ + edgeU_, corner_ + edgeU_ + edgeV_, corner_ + edgeV_};
+  }
 
  private:
   Point3f corner_;  // local (-w/2, -h/2)

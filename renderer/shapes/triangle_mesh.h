@@ -27,6 +27,7 @@ class TriangleMesh : public Shape {
   float area() const override { return static_cast<float>(areas_.total()); }
   ShapeSample sampleArea(const Point2f& u) const override;
   size_t primitiveCount() const override { return data_.indices.size() / 3; }
+  const MeshData& data() const { return data_; }
 
  private:
   Normal3f faceNormal(size_t tri) const;

@@ -1,0 +1,72 @@
+#include "chi2/domain.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace verity::chi2 {
+
+std::pair<double, double> Domain::clipY(double x, double lo, double hi) const {
+  switch (kind) {
+    case DomainKind::Disk: {
+      const double h = std::sqrt(std::max(0.0, 1 - x * x));
+      return {std::max(lo, -h), std::min(hi, h)};
+    }
+    case DomainKind::Triangle:
+      return {std::max(lo, 0.0), std::min(hi, 1 - x)};
+    default:
+      return {lo, hi};
+  }
+}
+
+bool Domain::inSupport(const Point2d& p) const {
+  if (!(p.x() >= x0 && p.x() <= x1 && p.y() >= y0 && p.y() <= y1)) return false;
+  switch (kind) {
+    case DomainKind::Disk:
+      return p.squaredNorm() <= 1;
+    case DomainKind::Triangle:
+      return p.x() + p.y() <= 1;
+    default:
+      return true;
+  }
+}
+
+int Domain::cellOf(const Point2d& p) const {
+  if (!(p.x() >= x0 && p.x() <= x1 && p.y() >= y0 && p.y() <= y1)) return -1;
+  const int i = std::min(nx - 1, static_cast<int>((p.x() - x0) / (x1 - x0) * nx));
+  const int j = std::min(ny - 1, static_cast<int>((p.y() - y0) / (y1 - y0) * ny));
+  return j * nx + i;
+}
+
+std::string Domain::name() const {
+  const char* names[] = {"sphere (phi, cos theta)", "square", "disk", "triangle (barycentric)"};
+  return std::string(names[static_cast<int>(kind)]) + " " + std::to_string(nx) + "x" +
+         std::to_string(ny);
+}
+
+Domain sphereDomain(int thetaCells) {
+  return {DomainKind::Sphere, 2 * thetaCells, thetaCells, 0, 2 * std::numbers::pi, -1, 1};
+}
+Domain squareDomain(int cells) {
+  return {DomainKind::Square, cells, cells, 0, 1, 0, 1};
+}
+Domain diskDomain(int cells) {
+  return {DomainKind::Disk, cells, cells, -1, 1, -1, 1};
+}
+Domain triangleDomain(int cells) {
+  return {DomainKind::Triangle, cells, cells, 0, 1, 0, 1};
+}
+
+Vector3d sphereDirection(double phi, double z) {
+  const double r = std::sqrt(std::max(0.0, 1 - z * z));
+  return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+Point2d sphereCoords(const Vector3f& v) {
+  const Vector3d d = v.cast<double>().normalized();
+  double phi = std::atan2(d.y(), d.x());
+  if (phi < 0) phi += 2 * std::numbers::pi;
+  if (phi >= 2 * std::numbers::pi) phi = 0;
+  return {phi, std::clamp(d.z(), -1.0, 1.0)};
+}
+
+}  // namespace verity::chi2

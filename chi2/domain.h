@@ -1,0 +1,53 @@
+// The two-dimensional domains on which samples are histogrammed. Each domain is a
+// rectangle of parameters (x, y) split into nx × ny cells, with a support that may be a
+// sub-region of the rectangle (the disk, the triangle); densities are always expressed
+// with respect to dx dy, so the parameterisations are chosen to be measure-preserving.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "core/math.h"
+
+namespace verity::chi2 {
+
+using Point2d = Eigen::Vector2d;
+using Vector3d = Eigen::Vector3d;
+
+enum class DomainKind {
+  // Directions as (φ ∈ [0, 2π), cos θ ∈ [−1, 1]): dω = dφ d(cos θ) (Archimedes), so the
+  // density per dφ dz equals the solid-angle density.
+  Sphere,
+  Square,    // [0, 1]²
+  Disk,      // the unit disk in Cartesian coordinates inside [−1, 1]²
+  Triangle,  // barycentric (b0, b1) with b0, b1 ≥ 0, b0 + b1 ≤ 1, inside [0, 1]²
+};
+
+struct Domain {
+  DomainKind kind = DomainKind::Square;
+  int nx = 1, ny = 1;
+  double x0 = 0, x1 = 1, y0 = 0, y1 = 1;
+
+  int cells() const { return nx * ny; }
+  double cellWidth() const { return (x1 - x0) / nx; }
+  double cellHeight() const { return (y1 - y0) / ny; }
+  // The support's extent in y at abscissa x, clipped to [lo, hi]; empty when lo ≥ hi.
+  std::pair<double, double> clipY(double x, double lo, double hi) const;
+  bool inSupport(const Point2d& p) const;
+  // The cell holding p, or −1 outside the rectangle. Cells are half-open, the last closed.
+  int cellOf(const Point2d& p) const;
+  std::string name() const;
+};
+
+Domain sphereDomain(int thetaCells);  // 2·thetaCells cells in φ, thetaCells in cos θ
+Domain squareDomain(int cells);
+Domain diskDomain(int cells);
+Domain triangleDomain(int cells);
+
+// Sphere parameterisation and its inverse (unit vectors; the inverse normalises in double).
+Vector3d sphereDirection(double phi, double z);
+Point2d sphereCoords(const Vector3f& v);
+
+}  // namespace verity::chi2

@@ -1,0 +1,115 @@
+#include "chi2/sampling_test.h"
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+
+#include "chi2/significance.h"
+
+namespace verity::chi2 {
+
+uint64_t seedFromName(const std::string& name) {
+  uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : name) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  TestResult r;
+  r.subject = subject.describe();
+  r.domain = subject.domain();
+  r.significance = options.significance > 0 ? options.significance : perTestSignificance();
+  r.samples = options.samples;
+  const Domain& d = r.domain;
+  const int cells = d.cells();
+
+  // Sampling, in fixed chunks with one PCG32 stream each: the result does not depend on
+  // the number of threads or their scheduling.
+  constexpr long long kChunk = 1 << 16;
+  const long long chunks = (options.samples + kChunk - 1) / kChunk;
+  std::vector<std::vector<long long>> partial(chunks);
+  std::vector<long long> validPerChunk(chunks, 0), outsidePerChunk(chunks, 0);
+  std::vector<Audit> audits(chunks);
+  tbb::parallel_for(0LL, chunks, [&](long long c) {
+    pcg32 rng(options.seed, static_cast<uint64_t>(c));
+    std::vector<long long> hist(cells, 0);
+    const long long n = std::min(kChunk, options.samples - c * kChunk);
+    for (long long k = 0; k < n; ++k) {
+      const std::optional<Point2d> p = subject.sample(rng, audits[c]);
+      if (!p) continue;
+      ++validPerChunk[c];
+      const int cell = d.cellOf(*p);
+      if (cell < 0 || !d.inSupport(*p)) {
+        ++outsidePerChunk[c];
+        continue;
+      }
+      ++hist[cell];
+    }
+    partial[c] = std::move(hist);
+  });
+  r.observed.assign(cells, 0);
+  for (long long c = 0; c < chunks; ++c) {
+    for (int i = 0; i < cells; ++i) r.observed[i] += partial[c][i];
+    r.valid += validPerChunk[c];
+    r.outside += outsidePerChunk[c];
+  }
+
+  // The density, guarded: non-finite or negative values are defects, and are replaced by
+  // zero so that the quadrature still terminates.
+  std::atomic<long long> badPdf{0}, negativePdf{0};
+  std::mutex exampleMutex;
+  std::string badExample;
+  DensityFn pdf = [&](double x, double y) {
+    const double v = subject.pdf(x, y);
+    if (std::isfinite(v) && v >= 0) return v;
+    (std::isfinite(v) ? negativePdf : badPdf)++;
+    std::lock_guard lock(exampleMutex);
+    if (badExample.empty())
+      badExample = fmt::format("pdf() = {} at domain point ({}, {})", v, x, y);
+    return 0.0;
+  };
+  const DensityFeatures features{[&](double x) { return subject.breakpointsY(x); },
+                                 subject.breakpointsX(), subject.peaks()};
+  const std::vector<CellIntegral> integrals = integrateGrid(pdf, d, options.quadrature, features);
+  r.probability.resize(cells);
+  double total = 0;
+  for (int i = 0; i < cells; ++i) {
+    r.probability[i] = integrals[i].value;
+    total += integrals[i].value;
+    r.quadratureError += integrals[i].error;
+  }
+
+  for (const Audit& a : audits) r.audit.merge(a);
+  if (badPdf) r.audit.record(Defect::NonFinite, badExample);
+  if (negativePdf) r.audit.record(Defect::Negative, badExample);
+  subject.extraChecks(r.audit);
+
+  // Chi-square on the shape: given the number of valid samples, they are distributed
+  // according to pdf / ∫pdf.
+  r.expected.resize(cells);
+  for (int i = 0; i < cells; ++i)
+    r.expected[i] = total > 0 ? r.valid * r.probability[i] / total : 0.0;
+  r.chiSquare = chiSquareTest(r.expected, r.observed, outrightThreshold(r.significance, cells));
+  r.integral = checkIntegral(total, r.samples, r.valid, r.significance, options.integralTolerance);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+std::string TestResult::report() const {
+  std::string s = fmt::format("{}\n  domain {}, {} samples, significance {:.3g} (Sidak)\n", subject,
+                              domain.name(), samples, significance);
+  s += fmt::format("  [{}] {}\n", chiSquarePassed() ? "pass" : "FAIL", chiSquare.describe());
+  if (outside > 0) s += fmt::format("         {} valid sample(s) outside the domain\n", outside);
+  s += fmt::format("  [{}] {} (quadrature error estimate {:.2e})\n",
+                   integral.passed ? "pass" : "FAIL", integral.describe(), quadratureError);
+  s += fmt::format("  [{}] {}\n", audit.clean() ? "pass" : "FAIL", audit.describe());
+  s += fmt::format("  {} in {:.2f} s", passed() ? "PASSED" : "FAILED", seconds);
+  return s;
+}
+
+}  // namespace verity::chi2

@@ -1,0 +1,98 @@
+// Unit tests of the framework's parts against values known independently of this code.
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "chi2/chi_square.h"
+#include "chi2/integral_check.h"
+#include "chi2/quadrature.h"
+#include "chi2/significance.h"
+#include "chi2/suite.h"
+
+namespace verity::chi2 {
+
+TEST(FrameworkSignificance, SidakKeepsTheFamilyLevel) {
+  // (1 − α)^m must give back 1 − α_family.
+  const double a = sidakLevel(0.01, 1000);
+  EXPECT_NEAR(std::pow(1 - a, 1000), 0.99, 1e-12);
+  EXPECT_NEAR(sidakLevel(0.01, 1), 0.01, 1e-15);
+  EXPECT_GE(declaredTestCount(), 2 * 600);
+}
+
+TEST(FrameworkChiSquare, KnownQuantile) {
+  // Two cells with expectation 50/50 and counts 60/40: X² = 4, one degree of freedom,
+  // p = P(χ²₁ > 4) = erfc(√2) = 0.0455003.
+  const ChiSquareResult r = chiSquareTest({50, 50}, {60, 40}, 1e-12);
+  EXPECT_DOUBLE_EQ(r.statistic, 4.0);
+  EXPECT_EQ(r.dof, 1);
+  EXPECT_NEAR(r.pValue, std::erfc(std::sqrt(2.0)), 1e-9);
+}
+
+TEST(FrameworkChiSquare, PoolsSmallCellsAndKeepsThePool) {
+  // Cells expecting 1, 2, 3 pool into one cell of 6, which is kept.
+  const ChiSquareResult r = chiSquareTest({1, 2, 3, 94}, {1, 2, 3, 94}, 1e-12);
+  EXPECT_EQ(r.pooledCells, 3);
+  EXPECT_EQ(r.regularCells, 2);
+  EXPECT_DOUBLE_EQ(r.pooledExpected, 6);
+  // A pool below 5 is merged into the smallest regular cell, not dropped: 10 samples in
+  // cells expecting 0.5 each add (10 − 1)²/... to the statistic.
+  const ChiSquareResult s = chiSquareTest({0.5, 0.5, 49, 50}, {5, 5, 40, 50}, 1e-12);
+  EXPECT_EQ(s.regularCells, 2);
+  EXPECT_NEAR(s.statistic, 0.0, 1e-12);  // (50 vs 50) and (49+1 vs 40+10)
+}
+
+TEST(FrameworkChiSquare, SampleWhereTheDensityIsZeroFailsOutright) {
+  const ChiSquareResult r = chiSquareTest({0, 500, 500}, {1, 500, 499}, outrightThreshold(1e-3, 3));
+  EXPECT_EQ(r.outrightSamples, 1);
+  EXPECT_FALSE(r.passed(1e-3));
+}
+
+TEST(FrameworkIntegral, FlagsTooLowAndTooHigh) {
+  const double a = perTestSignificance();
+  // The seed report's figures: integral 0.978916 with 91% valid, 1.04291 with 99%
+  // (6.5M samples in its test).
+  EXPECT_FALSE(checkIntegral(0.978916, 6'500'000, 5'915'000, a).passed);
+  EXPECT_FALSE(checkIntegral(1.04291, 6'500'000, 6'435'000, a).passed);
+  // Too low with every sample valid; too high with every sample valid.
+  EXPECT_FALSE(checkIntegral(0.995, 1'000'000, 1'000'000, a).passed);
+  EXPECT_FALSE(checkIntegral(1.005, 1'000'000, 1'000'000, a).passed);
+  // Agreement passes, within the binomial bound plus the quadrature tolerance.
+  EXPECT_TRUE(checkIntegral(1.0, 1'000'000, 1'000'000, a).passed);
+  EXPECT_TRUE(checkIntegral(0.5, 1'000'000, 500'300, a).passed);
+  // 0.5 ± 4.4σ·0.0005 = 0.5022 is beyond the bound at α ≈ 4e-6 (z ≈ 4.6)… and 6σ surely is.
+  EXPECT_FALSE(checkIntegral(0.5, 1'000'000, 503'000, a).passed);
+}
+
+TEST(FrameworkQuadrature, DiskAndTriangleSupports) {
+  // The area of the unit disk and of the triangle, cell by cell over their bounding squares.
+  for (auto [domain, area] :
+       {std::pair{diskDomain(7), std::numbers::pi}, std::pair{triangleDomain(7), 0.5}}) {
+    double total = 0;
+    for (const CellIntegral& c : integrateGrid([](double, double) { return 1.0; }, domain, {}))
+      total += c.value;
+    // To the quadrature's stated relative tolerance (QuadratureOptions::relTolerance).
+    EXPECT_NEAR(total, area, QuadratureOptions{}.relTolerance * area) << domain.name();
+  }
+  // A narrow Gaussian lobe (σ = 0.002) inside one cell of width 0.1 is found.
+  const double s = 0.002;
+  const Domain d = squareDomain(10);
+  double total = 0;
+  for (const CellIntegral& c : integrateGrid(
+           [s](double x, double y) {
+             const double r2 = (x - 0.4321) * (x - 0.4321) + (y - 0.5678) * (y - 0.5678);
+             return std::exp(-r2 / (2 * s * s)) / (2 * std::numbers::pi * s * s);
+           },
+           d, {}))
+    total += c.value;
+  EXPECT_NEAR(total, 1.0, 1e-6);
+}
+
+TEST(FrameworkSuite, AtLeast600Configurations) {
+  const size_t n =
+      suite::warpCases().size() + suite::microfacetCases().size() + suite::bsdfCases().size();
+  EXPECT_GE(n, 600u);
+  std::set<std::string> names;
+  for (const auto& c : suite::bsdfCases()) EXPECT_TRUE(names.insert(c.name).second) << c.name;
+}
+
+}  // namespace verity::chi2

@@ -1,0 +1,79 @@
+// The sweep: every warp, microfacet sampler and BSDF configuration of suite.cpp. The
+// `Quick` instantiations form the quick subset; the others run under the chi2-full label.
+#include "chi2/suite.h"
+
+#include <gtest/gtest.h>
+
+namespace verity::chi2::suite {
+
+namespace {
+
+template <class Case>
+std::vector<Case> select(const std::vector<Case>& all, bool quick) {
+  std::vector<Case> v;
+  for (const Case& c : all)
+    if (c.quick == quick) v.push_back(c);
+  return v;
+}
+
+template <class Case>
+std::string caseName(const ::testing::TestParamInfo<Case>& info) {
+  return info.param.name;
+}
+
+void expectPassed(const TestResult& r) {
+  EXPECT_TRUE(r.chiSquarePassed()) << r.report();
+  EXPECT_TRUE(r.integral.passed) << r.report();
+  EXPECT_TRUE(r.audit.clean()) << r.report();
+}
+
+}  // namespace
+
+class WarpTest : public ::testing::TestWithParam<WarpCase> {};
+TEST_P(WarpTest, SamplesMatchPdf) {
+  expectPassed(runWarp(GetParam()));
+}
+INSTANTIATE_TEST_SUITE_P(Quick, WarpTest, ::testing::ValuesIn(select(warpCases(), true)),
+                         caseName<WarpCase>);
+
+class MicrofacetTest : public ::testing::TestWithParam<MicrofacetCase> {};
+TEST_P(MicrofacetTest, SamplesMatchPdf) {
+  expectPassed(runMicrofacet(GetParam()));
+}
+TEST_P(MicrofacetTest, WeakWhiteFurnace) {
+  const MicrofacetCase& c = GetParam();
+  if (c.sampling != MicrofacetSampling::Visible) GTEST_SKIP() << "sampling does not enter";
+  const MicrofacetCheck r = checkWeakFurnace(c.distribution(), c.wi());
+  EXPECT_TRUE(r.passed) << r.describe();
+}
+TEST_P(MicrofacetTest, Normalisation) {
+  const MicrofacetCase& c = GetParam();
+  if (c.sampling != MicrofacetSampling::Visible || c.incidence != 0)
+    GTEST_SKIP() << "once per alpha";
+  const MicrofacetCheck r = checkNormalisation(c.distribution());
+  EXPECT_TRUE(r.passed) << r.describe();
+}
+INSTANTIATE_TEST_SUITE_P(Quick, MicrofacetTest,
+                         ::testing::ValuesIn(select(microfacetCases(), true)),
+                         caseName<MicrofacetCase>);
+INSTANTIATE_TEST_SUITE_P(Full, MicrofacetTest,
+                         ::testing::ValuesIn(select(microfacetCases(), false)),
+                         caseName<MicrofacetCase>);
+
+class LightTest : public ::testing::TestWithParam<LightCase> {};
+TEST_P(LightTest, SamplesMatchPdf) {
+  expectPassed(runLight(GetParam()));
+}
+INSTANTIATE_TEST_SUITE_P(Quick, LightTest, ::testing::ValuesIn(select(lightCases(), true)),
+                         caseName<LightCase>);
+
+class BsdfTest : public ::testing::TestWithParam<BsdfCase> {};
+TEST_P(BsdfTest, SamplesMatchPdf) {
+  expectPassed(runBsdf(GetParam()));
+}
+INSTANTIATE_TEST_SUITE_P(Quick, BsdfTest, ::testing::ValuesIn(select(bsdfCases(), true)),
+                         caseName<BsdfCase>);
+INSTANTIATE_TEST_SUITE_P(Full, BsdfTest, ::testing::ValuesIn(select(bsdfCases(), false)),
+                         caseName<BsdfCase>);
+
+}  // namespace verity::chi2::suite
