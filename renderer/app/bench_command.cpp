@@ -78,6 +78,7 @@ int runBdpt(const SceneFile& file, const BenchArgs& args) {
   fmt::print("scene {}: {}×{}, {} spp, max_bounces {}: bdpt vs path_tracer_nee\n", file.name,
              resolution.x(), resolution.y(), args.spp, bdptSettings.maxBounces);
   std::vector<double> ptOne, bdptOne, ratio, speedup;
+  double ptRays = 0, bdptRays = 0;  // per sample (the same in every repeat: seeded)
   for (int r = 0; r < args.repeats; ++r) {
     const RenderStats a = timedRender(file, *pt, args.spp, 1, resolution);
     const RenderStats b = timedRender(file, *bdpt, args.spp, 1, resolution);
@@ -86,11 +87,15 @@ int runBdpt(const SceneFile& file, const BenchArgs& args) {
     bdptOne.push_back(b.seconds / b.samples);
     ratio.push_back(bdptOne.back() / ptOne.back());
     speedup.push_back(b.seconds / b2.seconds);
+    ptRays = double(a.rays) / a.samples;
+    bdptRays = double(b.rays) / b.samples;
   }
-  fmt::print("path_tracer_nee, 1 thread: {:8.3f} µs/sample  ({:.3f} Msamples/s)\n",
-             1e6 * median(ptOne), 1e-6 / median(ptOne));
-  fmt::print("bdpt, 1 thread:            {:8.3f} µs/sample  ({:.3f} Msamples/s)\n",
-             1e6 * median(bdptOne), 1e-6 / median(bdptOne));
+  fmt::print(
+      "path_tracer_nee, 1 thread: {:8.3f} µs/sample  ({:.3f} Msamples/s, {:.2f} rays/sample)\n",
+      1e6 * median(ptOne), 1e-6 / median(ptOne), ptRays);
+  fmt::print(
+      "bdpt, 1 thread:            {:8.3f} µs/sample  ({:.3f} Msamples/s, {:.2f} rays/sample)\n",
+      1e6 * median(bdptOne), 1e-6 / median(bdptOne), bdptRays);
   fmt::print("bdpt / path_tracer_nee time per sample: {:.2f}x  (target <= 2x)\n", median(ratio));
   fmt::print("bdpt speedup at 2 threads:              {:.2f}x  (target >= 1.9x)\n",
              median(speedup));
