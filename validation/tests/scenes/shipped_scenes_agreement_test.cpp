@@ -198,20 +198,16 @@ struct Family {
   }
 };
 
-class ShippedScenes : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    const auto start = std::chrono::steady_clock::now();
-    scenes_ = new std::vector<SceneStatistics>();
-    for (int s = 0; s < int(std::size(kScenes)); ++s) scenes_->push_back(renderScene(s, s == 0));
-    fmt::print("rendered {} scenes x 3 integrators, {} batches of {}/{}/{} spp, in {:.1f} s\n",
-               scenes_->size(), kBatches, kBatchSpp[0], kBatchSpp[1], kBatchSpp[2],
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  static void TearDownTestSuite() { delete scenes_; }
-  static std::vector<SceneStatistics>* scenes_;
-};
-std::vector<SceneStatistics>* ShippedScenes::scenes_ = nullptr;
+// Every scene rendered by every integrator.
+std::vector<SceneStatistics> renderAll() {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<SceneStatistics> scenes;
+  for (int s = 0; s < int(std::size(kScenes)); ++s) scenes.push_back(renderScene(s, s == 0));
+  fmt::print("rendered {} scenes x 3 integrators, {} batches of {}/{}/{} spp, in {:.1f} s\n",
+             scenes.size(), kBatches, kBatchSpp[0], kBatchSpp[1], kBatchSpp[2],
+             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  return scenes;
+}
 
 // The family of the image comparisons, with BDPT's images scaled by `bdptGain`.
 Family imageFamily(const std::vector<SceneStatistics>& scenes, double bdptGain) {
@@ -225,28 +221,27 @@ Family imageFamily(const std::vector<SceneStatistics>& scenes, double bdptGain) 
   return family;
 }
 
-TEST_F(ShippedScenes, BdptAndLightTracerMatchThePathTracer) {
-  for (const SceneStatistics& s : *scenes_) EXPECT_EQ(s.invalidSamples, 0u) << s.name;
-  EXPECT_EQ(imageFamily(*scenes_, 1).decide("images, all scenes").rejections, 0);
-}
+// One test, so that CTest (which runs each test in its own process) renders once.
+TEST(ShippedScenes, BdptAndLightTracerMatchThePathTracer) {
+  const std::vector<SceneStatistics> scenes = renderAll();
+  for (const SceneStatistics& s : scenes) EXPECT_EQ(s.invalidSamples, 0u) << s.name;
+  EXPECT_EQ(imageFamily(scenes, 1).decide("images, all scenes").rejections, 0);
 
-// Power: the same family must fail when BDPT is 2% too bright everywhere. The power bound
-// must cover 2% before the detection means anything; a 1% error in one scene is shown
-// detected by end_to_end_test and bdpt_strategies_test at their sample counts.
-TEST_F(ShippedScenes, TwoPercentBrighterBdptIsDetected) {
-  const Family::Decision decision = imageFamily(*scenes_, 1.02).decide("bdpt 2% brighter");
-  ASSERT_LT(decision.detectableBias, 0.02);
-  EXPECT_GT(decision.rejections, 0);
-}
-
-TEST_F(ShippedScenes, BdptPathLengthsMatchThePathTracer) {
-  const SceneStatistics& box = scenes_->front();
+  // Per path length k on cornell-box: BDPT's weighted strategies of length k summed.
+  const SceneStatistics& box = scenes.front();
   ASSERT_EQ(box.bdptLengths.size(), size_t(kMaxBounces + 1));
-  Family family;
+  Family lengths;
   for (int k = 0; k <= kMaxBounces; ++k)
-    family.add(fmt::format("{}: length {}", box.name, k), box.pathTracerLengths[k].statistics(),
-               box.bdptLengths[k].statistics());
-  EXPECT_EQ(family.decide("path lengths, cornell-box").rejections, 0);
+    lengths.add(fmt::format("{}: length {}", box.name, k), box.pathTracerLengths[k].statistics(),
+                box.bdptLengths[k].statistics());
+  EXPECT_EQ(lengths.decide("path lengths, cornell-box").rejections, 0);
+
+  // Power: the image family must fail when BDPT is 2% too bright everywhere. The power bound
+  // must cover 2% before the detection means anything; a 1% error in one scene is shown
+  // detected by end_to_end_test and bdpt_strategies_test at their sample counts.
+  const Family::Decision brighter = imageFamily(scenes, 1.02).decide("bdpt 2% brighter");
+  ASSERT_LT(brighter.detectableBias, 0.02);
+  EXPECT_GT(brighter.rejections, 0);
 }
 
 }  // namespace
