@@ -9,6 +9,7 @@
 //   - Path lengths (cornell-box). For each k = 0 … 5, BDPT's weighted strategies of length k
 //     summed against the path tracer's length-k image, per tile and channel; its own Holm
 //     family at 1%.
+//   - Power. The image family must reject BDPT's images made 2% brighter.
 // Tiles are estimated by batch means (batch_regions.h): splats correlate the pixels of a
 // pass, so per-pixel variances would understate a tile's. Seeds are fixed by the formula in
 // seedOf, written once and never tuned.
