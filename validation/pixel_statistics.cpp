@@ -66,6 +66,15 @@ PixelStatistics pixelStatistics(const ImageChannels& image, const std::string& l
   return stats;
 }
 
+PixelStatistics scaledStatistics(PixelStatistics s, double factor) {
+  s.label += fmt::format(" x{}", factor);
+  for (int c = 0; c < kChannels; ++c) {
+    for (double& m : s.mean[c]) m *= factor;
+    for (double& v : s.variance[c]) v *= factor * factor;
+  }
+  return s;
+}
+
 PixelStatistics loadPixelStatistics(const std::filesystem::path& file) {
   return pixelStatistics(readExr(file), file.string());
 }

@@ -31,6 +31,9 @@ struct PixelStatistics {
 // naming `label` when a plane is missing (render with --variance), or a value is negative,
 // not finite, or a sample count is not a whole number.
 PixelStatistics pixelStatistics(const ImageChannels& image, const std::string& label);
+// The statistics of every sample multiplied by `factor` (means × factor, variances ×
+// factor²): a render with a uniform brightness error, to measure a comparison's power.
+PixelStatistics scaledStatistics(PixelStatistics s, double factor);
 // readExr followed by pixelStatistics.
 PixelStatistics loadPixelStatistics(const std::filesystem::path& file);
 

@@ -55,16 +55,6 @@ PixelStatistics renderImage(const char* integratorType, uint64_t seed) {
   return pixelStatistics(image, std::string(integratorType) + " seed " + std::to_string(seed));
 }
 
-// Every sample times `factor`: means × factor, variances × factor².
-PixelStatistics scaled(PixelStatistics s, double factor) {
-  s.label += " x" + std::to_string(factor);
-  for (int c = 0; c < kChannels; ++c) {
-    for (double& m : s.mean[c]) m *= factor;
-    for (double& v : s.variance[c]) v *= factor * factor;
-  }
-  return s;
-}
-
 class EndToEnd : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -95,9 +85,9 @@ TEST_F(EndToEnd, OnePercentBrightnessErrorIsDetected) {
   std::printf("detectable uniform bias at %.0f%% power: %.3f%% (%d spp, 32x32 px)\n",
               100 * base.options.power, 100 * base.detectableBias, kSpp);
   ASSERT_LT(base.detectableBias, 0.01);
-  const ComparisonResult brighterMis = compareImages(*nee_, scaled(*mis_, 1.01));
+  const ComparisonResult brighterMis = compareImages(*nee_, scaledStatistics(*mis_, 1.01));
   EXPECT_TRUE(brighterMis.differ) << comparisonSummary(brighterMis);
-  const ComparisonResult brighterNee = compareImages(scaled(*nee_, 1.01), *mis_);
+  const ComparisonResult brighterNee = compareImages(scaledStatistics(*nee_, 1.01), *mis_);
   EXPECT_TRUE(brighterNee.differ) << comparisonSummary(brighterNee);
   std::printf(
       "1%% brighter MIS: smallest p %.3g, %d tests rejected; 1%% brighter NEE: smallest "
