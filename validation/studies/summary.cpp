@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 #include <tuple>
 
@@ -60,6 +61,7 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
   nlohmann::json out = {{"convergence", nlohmann::json::array()},
                         {"best", nlohmann::json::array()},
                         {"speedup", nlohmann::json::array()},
+                        {"strategies", nlohmann::json::array()},
                         {"confidence", confidence}};
   // (scene, w, h, budget type, threads) -> integrator -> efficiency
   std::map<std::tuple<std::string, int, int, std::string, int>, std::map<std::string, double>>
@@ -158,6 +160,33 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
                                 {"parallel_efficiency", s * fewest / std::max(threads, 1)}});
     }
   }
+  for (const nlohmann::json& r : records) {
+    if (r.value("study", "") != "strategies" || !r.contains("strategies")) continue;
+    std::vector<nlohmann::json> ranked(r["strategies"].begin(), r["strategies"].end());
+    std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) {
+      return a.value("share", 0.0) > b.value("share", 0.0);
+    });
+    // The fewest strategies that together make kCarriedShare of the image carry it.
+    nlohmann::json carrying = nlohmann::json::array();
+    double carried = 0;
+    for (const nlohmann::json& st : ranked) {
+      if (carried >= kCarriedShare) break;
+      carried += st.value("share", 0.0);
+      carrying.push_back(st);
+    }
+    nlohmann::json entry = {{"scene", r.value("scene", "")},
+                            {"width", r.value("width", 0)},
+                            {"height", r.value("height", 0)},
+                            {"max_bounces", r.value("max_bounces", 0)},
+                            {"spp", r.value("spp", 0)},
+                            {"carried_share_target", kCarriedShare},
+                            {"carried_share", carried},
+                            {"carrying", carrying},
+                            {"ranked", ranked}};
+    if (r.contains("share_beyond_max_bounces"))
+      entry["share_beyond_max_bounces"] = r["share_beyond_max_bounces"];
+    out["strategies"].push_back(entry);
+  }
   return out;
 }
 
@@ -197,6 +226,15 @@ std::string summaryText(const nlohmann::json& summary) {
                        g["threads"].get<int>(), g["repeats"].get<size_t>(),
                        g["median_wall_seconds"].get<double>(), g["speedup"].get<double>(),
                        g["parallel_efficiency"].get<double>());
+  }
+  for (const nlohmann::json& g : summary["strategies"]) {
+    std::string list;
+    for (const nlohmann::json& st : g["carrying"])
+      list += fmt::format("{}(s={}, t={}) {:.1f}%", list.empty() ? "" : ", ", st["s"].get<int>(),
+                          st["t"].get<int>(), 100 * st["share"].get<double>());
+    s += fmt::format("BDPT strategies carrying {:.0f}% of {} ({} spp, max bounces {}): {}\n",
+                     100 * g["carried_share"].get<double>(), g["scene"].get<std::string>(),
+                     g["spp"].get<int>(), g["max_bounces"].get<int>(), list);
   }
   return s;
 }
