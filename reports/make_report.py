@@ -276,13 +276,16 @@ def tables(summary):
     if speed:
         rows = [[s["scene"], s["integrator"], s["spp"], s["threads"], s["repeats"],
                  f"{s['median_wall_seconds']:.4g}", f"{s['speedup']:.3f}",
-                 f"{s['parallel_efficiency']:.3f}"] for s in speed]
+                 f"{s['parallel_efficiency']:.3f}", f"{s.get('cores_used', float('nan')):.2f}"]
+                for s in speed]
         out.append(("Speed-up",
                     ["scene", "integrator", "spp", "threads", "repeats", "median wall s",
-                     "speed-up", "parallel efficiency"], rows,
+                     "speed-up", "parallel efficiency", "cores used"], rows,
                     "Thread counts alternate within each repeat; speed-up = median time at the "
                     "fewest threads / median time; parallel efficiency = speed-up × fewest "
-                    "threads / threads."))
+                    "threads / threads; cores used = median CPU seconds / median wall seconds, "
+                    "the cores the render actually got (under the thread count on a loaded "
+                    "machine, which caps the speed-up)."))
     strat = summary.get("strategies", [])
     if strat:
         rows = []
@@ -343,10 +346,11 @@ def findings(summary, records):
         for integ in sorted({s["integrator"] for s in speed if s["scene"] == scene}):
             rows = sorted((s for s in speed if s["scene"] == scene and s["integrator"] == integ),
                           key=lambda s: s["threads"])
-            pts = ", ".join(f"{s['speedup']:.2f}× at {s['threads']}" for s in rows)
+            pts = ", ".join(f"{s['speedup']:.2f}× at {s['threads']} thread{'s' if s['threads'] != 1 else ''} (using "
+                            f"{s.get('cores_used', float('nan')):.2f} cores)" for s in rows)
             lines.append(f"- **Speed-up on {scene}, {integ}** (over {rows[0]['baseline_threads']} "
                          f"thread{'s' if rows[0]['baseline_threads'] != 1 else ''}, "
-                         f"{rows[0]['spp']} spp): {pts} threads.")
+                         f"{rows[0]['spp']} spp): {pts}.")
     cores = sorted({r.get("cores") for r in records if r.get("study") == "speedup"})
     threads = sorted({s["threads"] for s in speed})
     if cores:

@@ -43,7 +43,7 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
   using GroupKey = std::tuple<std::string, int, int, std::string, int, int, std::string>;
   std::map<GroupKey, std::vector<const nlohmann::json*>> groups;
   using SpeedKey = std::tuple<std::string, int, int, std::string, int, int>;
-  std::map<SpeedKey, std::map<int, std::vector<double>>> speed;
+  std::map<SpeedKey, std::map<int, std::vector<double>>> speed, speedCpu;
   for (const nlohmann::json& r : records) {
     const std::string study = r.value("study", "");
     if (study == "convergence")
@@ -51,11 +51,12 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
               r.value("integrator", ""), r.value("max_bounces", 0), r.value("threads", 0),
               r.value("budget_type", "")}]
           .push_back(&r);
-    else if (study == "speedup")
-      speed[{r.value("scene", ""), r.value("width", 0), r.value("height", 0),
-             r.value("integrator", ""), r.value("max_bounces", 0), r.value("spp", 0)}]
-           [r.value("threads", 0)]
-               .push_back(r.value("wall_seconds", 0.0));
+    else if (study == "speedup") {
+      const SpeedKey key{r.value("scene", ""),      r.value("width", 0),       r.value("height", 0),
+                         r.value("integrator", ""), r.value("max_bounces", 0), r.value("spp", 0)};
+      speed[key][r.value("threads", 0)].push_back(r.value("wall_seconds", 0.0));
+      speedCpu[key][r.value("threads", 0)].push_back(r.value("cpu_seconds", 0.0));
+    }
   }
 
   nlohmann::json out = {{"convergence", nlohmann::json::array()},
@@ -146,6 +147,9 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
     for (const auto& [threads, times] : byThreads) {
       const double m = median(times);
       const double s = base / m;
+      // CPU seconds per wall second: how many cores the render really had. On a loaded
+      // machine it stays under the thread count, and so does the speed-up.
+      const double coresUsed = median(speedCpu[key][threads]) / std::max(m, 1e-12);
       out["speedup"].push_back({{"scene", scene},
                                 {"width", w},
                                 {"height", h},
@@ -157,6 +161,7 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
                                 {"repeats", times.size()},
                                 {"median_wall_seconds", m},
                                 {"speedup", s},
+                                {"cores_used", coresUsed},
                                 {"parallel_efficiency", s * fewest / std::max(threads, 1)}});
     }
   }
@@ -218,14 +223,15 @@ std::string summaryText(const nlohmann::json& summary) {
   }
   if (!summary["speedup"].empty()) {
     s += "Speed-up (medians of alternating repeats)\n";
-    s += fmt::format("{:<18} {:<16} {:>7} {:>8} {:>12} {:>9} {:>11}\n", "scene", "integrator",
-                     "threads", "repeats", "median s", "speed-up", "par. eff.");
+    s +=
+        fmt::format("{:<18} {:<16} {:>7} {:>8} {:>12} {:>9} {:>11} {:>11}\n", "scene", "integrator",
+                    "threads", "repeats", "median s", "speed-up", "par. eff.", "cores used");
     for (const nlohmann::json& g : summary["speedup"])
-      s += fmt::format("{:<18} {:<16} {:>7} {:>8} {:>12.4f} {:>9.3f} {:>11.3f}\n",
+      s += fmt::format("{:<18} {:<16} {:>7} {:>8} {:>12.4f} {:>9.3f} {:>11.3f} {:>11.2f}\n",
                        g["scene"].get<std::string>(), g["integrator"].get<std::string>(),
                        g["threads"].get<int>(), g["repeats"].get<size_t>(),
                        g["median_wall_seconds"].get<double>(), g["speedup"].get<double>(),
-                       g["parallel_efficiency"].get<double>());
+                       g["parallel_efficiency"].get<double>(), g["cores_used"].get<double>());
   }
   for (const nlohmann::json& g : summary["strategies"]) {
     std::string list;
