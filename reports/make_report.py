@@ -316,11 +316,21 @@ def findings(summary, records):
         ratios = sorted((v, k) for k, v in b["times_better_than"].items() if k != b["integrator"])
         if ratios:
             runner, worst = ratios[0], ratios[-1]
+
+            def spread(integ):
+                # The runs' own efficiencies at the largest budget, to judge a close call.
+                rs = [r for r in conv if r["scene"] == b["scene"] and r["integrator"] == integ
+                      and r["threads"] == b["threads"] and r["budget_type"] == b["budget_type"]]
+                top = max(r["budget"] for r in rs)
+                e = [1 / (r["rel_mse"] * r["wall_seconds"]) for r in rs if r["budget"] == top]
+                return f"{min(e):.3g} to {max(e):.3g}"
+
             lines.append(
                 f"- **Best efficiency on {b['scene']}** ({b['threads']} thread"
                 f"{'s' if b['threads'] != 1 else ''}, {b['budget_type']} budgets): "
                 f"**{b['integrator']}**, {runner[0]:.2f}× as efficient as the runner-up "
-                f"{runner[1]} and {worst[0]:.2f}× as efficient as {worst[1]}.")
+                f"{runner[1]} and {worst[0]:.2f}× as efficient as {worst[1]} (runs at the "
+                f"largest budget: {spread(b['integrator'])} against {spread(runner[1])}).")
     for scene in sorted({r["scene"] for r in conv}):
         rs = [r for r in conv if r["scene"] == scene and r.get("rel_mse", 0) > 0]
         ref = max(r.get("reference_rel_mse", 0) for r in rs)
@@ -337,9 +347,23 @@ def findings(summary, records):
         text = (f"- **BDPT strategies on {g['scene']}** ({g['spp']} spp, max bounces "
                 f"{g['max_bounces']}): {len(g['carrying'])} strategies carry "
                 f"{100 * g['carried_share']:.1f}% of the image: {carried}.")
+        bounced = [st for st in g["ranked"] if st["bounces"] > 0]
+        rest = sum(st["share"] for st in bounced)
+        if 0 < rest < 1:
+            carried, picked = 0.0, []
+            for st in bounced:
+                if carried >= g["carried_share_target"] * rest:
+                    break
+                carried += st["share"]
+                picked.append(f"({st['s']}, {st['t']}) {100 * st['share'] / rest:.1f}%")
+            text += (f" Emitters seen directly (0 bounces) make {100 * (1 - rest):.1f}% of it; "
+                     f"of the light with at least one bounce, {len(picked)} strategies carry "
+                     f"{100 * carried / rest:.1f}%: {', '.join(picked)}.")
         if "share_beyond_max_bounces" in g:
-            text += (f" Paths of more than {g['max_bounces']} bounces add "
-                     f"{100 * g['share_beyond_max_bounces']:.1f}% to the full image (reference).")
+            x = g["share_beyond_max_bounces"]
+            text += (f" This render's mean is {100 * abs(x):.1f}% {'below' if x >= 0 else 'above'} "
+                     f"the reference's (all path lengths): the paths of more than "
+                     f"{g['max_bounces']} bounces, plus both images' noise.")
         lines.append(text)
     speed = summary.get("speedup", [])
     for scene in sorted({s["scene"] for s in speed}):
