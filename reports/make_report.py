@@ -276,14 +276,111 @@ def tables(summary):
     if speed:
         rows = [[s["scene"], s["integrator"], s["spp"], s["threads"], s["repeats"],
                  f"{s['median_wall_seconds']:.4g}", f"{s['speedup']:.3f}",
-                 f"{s['parallel_efficiency']:.3f}"] for s in speed]
+                 f"{s['parallel_efficiency']:.3f}", f"{s.get('cores_used', float('nan')):.2f}"]
+                for s in speed]
         out.append(("Speed-up",
                     ["scene", "integrator", "spp", "threads", "repeats", "median wall s",
-                     "speed-up", "parallel efficiency"], rows,
+                     "speed-up", "parallel efficiency", "cores used"], rows,
                     "Thread counts alternate within each repeat; speed-up = median time at the "
                     "fewest threads / median time; parallel efficiency = speed-up × fewest "
-                    "threads / threads."))
+                    "threads / threads; cores used = median CPU seconds / median wall seconds, "
+                    "the cores the render actually got (under the thread count on a loaded "
+                    "machine, which caps the speed-up)."))
+    strat = summary.get("strategies", [])
+    if strat:
+        rows = []
+        for g in strat:
+            carrying = {(c["s"], c["t"]) for c in g["carrying"]}
+            for st in g["ranked"]:
+                if st["share"] < 1e-3 and (st["s"], st["t"]) not in carrying:
+                    continue
+                rows.append([g["scene"], g["spp"], g["max_bounces"], st["bounces"],
+                             f"({st['s']}, {st['t']})", f"{100 * st['share']:.2f}%",
+                             "yes" if (st["s"], st["t"]) in carrying else ""])
+        out.append(("BDPT strategies",
+                    ["scene", "spp", "max bounces", "bounces", "(s, t)", "share of the image",
+                     f"carries ({100 * strat[0]['carried_share_target']:.0f}%)"], rows,
+                    "s counts light subpath vertices (the emitter point included), t camera "
+                    "subpath vertices (the lens point included); share = the strategy's "
+                    "MIS-weighted image, mean over pixels and channels, over the image's. "
+                    "Strategies under 0.1% are left out. The fewest strategies whose shares "
+                    "reach the target carry the image."))
     return out
+
+
+def findings(summary, records):
+    """Sentences with the numbers the report is asked for, per scene."""
+    conv = [r for r in records if r.get("study") == "convergence"]
+    lines = []
+    for b in summary.get("best", []):
+        ratios = sorted((v, k) for k, v in b["times_better_than"].items() if k != b["integrator"])
+        if ratios:
+            runner, worst = ratios[0], ratios[-1]
+
+            def spread(integ):
+                # The runs' own efficiencies at the largest budget, to judge a close call.
+                rs = [r for r in conv if r["scene"] == b["scene"] and r["integrator"] == integ
+                      and r["threads"] == b["threads"] and r["budget_type"] == b["budget_type"]]
+                top = max(r["budget"] for r in rs)
+                e = [1 / (r["rel_mse"] * r["wall_seconds"]) for r in rs if r["budget"] == top]
+                return f"{min(e):.3g} to {max(e):.3g}"
+
+            lines.append(
+                f"- **Best efficiency on {b['scene']}** ({b['threads']} thread"
+                f"{'s' if b['threads'] != 1 else ''}, {b['budget_type']} budgets): "
+                f"**{b['integrator']}**, {runner[0]:.2f}× as efficient as the runner-up "
+                f"{runner[1]} and {worst[0]:.2f}× as efficient as {worst[1]} (runs at the "
+                f"largest budget: {spread(b['integrator'])} against {spread(runner[1])}).")
+    for scene in sorted({r["scene"] for r in conv}):
+        rs = [r for r in conv if r["scene"] == scene and r.get("rel_mse", 0) > 0]
+        ref = max(r.get("reference_rel_mse", 0) for r in rs)
+        low = min(rs, key=lambda r: r["rel_mse"])
+        if ref > 0:
+            lines.append(
+                f"- **Reference of {scene}**: its own relative MSE is {ref:.3g}; the smallest "
+                f"error any run reports is {low['rel_mse']:.3g} ({low['integrator']}, "
+                f"{low['budget']:g} {low['budget_type']}), {low['rel_mse'] / ref:.1f}× the "
+                f"reference's ({'at least' if low['rel_mse'] >= 10 * ref else '**under**'} "
+                f"the 10× asked for).")
+    for g in summary.get("strategies", []):
+        carried = ", ".join(f"({c['s']}, {c['t']}) {100 * c['share']:.1f}%" for c in g["carrying"])
+        text = (f"- **BDPT strategies on {g['scene']}** ({g['spp']} spp, max bounces "
+                f"{g['max_bounces']}): {len(g['carrying'])} strategies carry "
+                f"{100 * g['carried_share']:.1f}% of the image: {carried}.")
+        bounced = [st for st in g["ranked"] if st["bounces"] > 0]
+        rest = sum(st["share"] for st in bounced)
+        if 0 < rest < 1:
+            carried, picked = 0.0, []
+            for st in bounced:
+                if carried >= g["carried_share_target"] * rest:
+                    break
+                carried += st["share"]
+                picked.append(f"({st['s']}, {st['t']}) {100 * st['share'] / rest:.1f}%")
+            text += (f" Emitters seen directly (0 bounces) make {100 * (1 - rest):.1f}% of it; "
+                     f"of the light with at least one bounce, {len(picked)} strategies carry "
+                     f"{100 * carried / rest:.1f}%: {', '.join(picked)}.")
+        if "share_beyond_max_bounces" in g:
+            x = g["share_beyond_max_bounces"]
+            text += (f" This render's mean is {100 * abs(x):.1f}% {'below' if x >= 0 else 'above'} "
+                     f"the reference's (all path lengths): the paths of more than "
+                     f"{g['max_bounces']} bounces, plus both images' noise.")
+        lines.append(text)
+    speed = summary.get("speedup", [])
+    for scene in sorted({s["scene"] for s in speed}):
+        for integ in sorted({s["integrator"] for s in speed if s["scene"] == scene}):
+            rows = sorted((s for s in speed if s["scene"] == scene and s["integrator"] == integ),
+                          key=lambda s: s["threads"])
+            pts = ", ".join(f"{s['speedup']:.2f}× at {s['threads']} thread{'s' if s['threads'] != 1 else ''} (using "
+                            f"{s.get('cores_used', float('nan')):.2f} cores)" for s in rows)
+            lines.append(f"- **Speed-up on {scene}, {integ}** (over {rows[0]['baseline_threads']} "
+                         f"thread{'s' if rows[0]['baseline_threads'] != 1 else ''}, "
+                         f"{rows[0]['spp']} spp): {pts}.")
+    cores = sorted({r.get("cores") for r in records if r.get("study") == "speedup"})
+    threads = sorted({s["threads"] for s in speed})
+    if cores:
+        lines.append(f"- Thread counts timed: {', '.join(map(str, threads))}, on a machine with "
+                     f"{', '.join(map(str, cores))} cores; no larger count was measured.")
+    return lines
 
 
 def markdown_table(header, rows):
@@ -346,6 +443,9 @@ def main():
 
     tbls = tables(summary)
     md = ["# Verity study report", "", meta, "", meta_runs, ""]
+    found = findings(summary, records)
+    if found:
+        md += ["## Findings", ""] + found + [""]
     for title, header, rows, note in tbls:
         md += [f"## {title}", "", markdown_table(header, rows), ""]
         if note:
@@ -363,6 +463,9 @@ def main():
     parts = [f"<!doctype html><html><head><meta charset='utf-8'><title>Verity study report"
              f"</title><style>{css}</style></head><body><h1>Verity study report</h1>",
              f"<p>{html.escape(meta)}</p><p>{html.escape(meta_runs)}</p>"]
+    if found:
+        parts.append("<h2>Findings</h2><ul>" + "".join(
+            f"<li>{html.escape(f[2:]).replace('**', '')}</li>" for f in found) + "</ul>")
     for title, header, rows, note in tbls:
         parts.append(f"<h2>{html.escape(title)}</h2>" + html_table(header, rows))
         if note:

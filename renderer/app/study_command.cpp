@@ -1,6 +1,5 @@
 #include "app/study_command.h"
 
-
 #include <fmt/format.h>
 
 #include "validation/studies/convergence.h"
@@ -108,13 +107,47 @@ void addSpeedup(CLI::App& study) {
   });
 }
 
+void addStrategies(CLI::App& study) {
+  auto config = std::make_shared<studies::StrategiesConfig>();
+  auto reference = std::make_shared<std::string>();
+  auto output = std::make_shared<std::string>("strategies.jsonl");
+  CLI::App* cmd = study.add_subcommand(
+      "strategies",
+      "One BDPT render split into its MIS-weighted strategies (s, t): each strategy's share "
+      "of the image");
+  cmd->add_option("scene", config->scene, "Scene file (.json)")->required();
+  cmd->add_option("--spp", config->spp, "Samples per pixel")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-bounces", config->maxBounces, "Maximum scattering events per path")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--resolution", config->resolution,
+                  "Image width (default: the reference's, else the scene's)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--threads", config->threads, "Worker threads (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--reference", *reference,
+                  "Reference EXR of the full image, for the share of longer paths (optional)");
+  cmd->add_option("-o,--output", *output, "Results file (JSON Lines; appended to)")
+      ->capture_default_str();
+  cmd->callback([=] {
+    config->reference = *reference;
+    config->output = *output;
+    const studies::StudyProgress p = studies::runStrategiesStudy(*config, logLine);
+    fmt::print(stderr, "{} renders done, {} already in {}\n", p.done, p.skipped, *output);
+    printSummary(*output);
+  });
+}
+
 }  // namespace
 
 void addStudyCommand(CLI::App& app) {
-  CLI::App* study = app.add_subcommand("study", "Convergence and speed-up studies");
+  CLI::App* study = app.add_subcommand("study", "Convergence, speed-up and BDPT strategy studies");
   study->require_subcommand(1);
   addConvergence(*study);
   addSpeedup(*study);
+  addStrategies(*study);
 }
 
 }  // namespace verity

@@ -1,5 +1,5 @@
-// Convergence and speed-up studies: many independent seeded renders, each one a line of
-// a JSON Lines file, so that a study that is interrupted resumes where it stopped.
+// Convergence, speed-up and BDPT strategy studies: seeded renders, each one a line of a JSON
+// Lines file, so that a study that is interrupted resumes where it stopped.
 #pragma once
 
 #include <filesystem>
@@ -52,5 +52,23 @@ struct SpeedupConfig {
 // do the same work (renders are bit-identical across thread counts). Resumable like above.
 StudyProgress runSpeedupStudy(const SpeedupConfig& config,
                               const std::function<void(const std::string&)>& log);
+
+struct StrategiesConfig {
+  std::filesystem::path scene;
+  int spp = 64;
+  int resolution = 0;  // image width; 0: the scene's
+  // BDPT keeps (k + 1)(k + 4) films for max bounces k, so the scene's usual 64 is out of reach;
+  // the record says how much of the full image the strategies up to k account for.
+  int maxBounces = 6;
+  int threads = 0;                  // 0: all cores
+  std::filesystem::path reference;  // optional: the full image, for the share beyond k
+  std::filesystem::path output = "strategies.jsonl";
+};
+
+// One BDPT render with the MIS-weighted image of every strategy (s, t), reduced to each
+// strategy's share of the image: its mean over pixels and channels divided by the image's.
+// The shares add up to 1. Resumable like above (key: scene, resolution, max bounces, spp).
+StudyProgress runStrategiesStudy(const StrategiesConfig& config,
+                                 const std::function<void(const std::string&)>& log);
 
 }  // namespace verity::studies

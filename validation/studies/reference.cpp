@@ -58,6 +58,13 @@ ReferenceResult makeReference(const ReferenceConfig& config) {
       {"machine", toJson(machine)},
       {"revision", revision},
       {"created", timestamp()},
+      {"format", "OpenEXR, half float, ZIP; R, G, B, variance.R/G/B, samples"},
+      // Every setting spelled out, so that the command remakes this image bit for bit at
+      // `revision` (renders do not depend on the thread count).
+      {"command", fmt::format("verity reference {} --spp {} --integrator {} --max-bounces {} "
+                              "--resolution {} --seed {} --dir {}",
+                              config.scene.string(), timed.stats.passes, settings.type,
+                              settings.maxBounces, film.width(), seed, config.directory.string())},
       {"rel_mse", ownRelMse},
       {"rel_mse_epsilon", kRelEpsilon},
       {"rel_mse_note",

@@ -80,8 +80,9 @@ double cpuNow() {
 }  // namespace
 
 TimedRender timedRender(const SceneFile& file, const Integrator& integrator, Film& film, int spp,
-                        int threads, uint64_t seed, double timeLimit) {
+                        int threads, uint64_t seed, double timeLimit, ComponentImages* components) {
   RenderOptions options;
+  options.components = components;
   options.threads = threads;
   options.seed = seed;
   options.samplesPerPixel = timeLimit > 0 ? (1 << 24) : spp;

@@ -41,9 +41,11 @@ struct TimedRender {
   double cpuSeconds = 0;   // CPU time of the whole process (all threads) over the same span
 };
 // Renders spp samples per pixel, or, with timeLimit > 0, passes until timeLimit seconds have
-// passed (at least one pass; the last pass may overrun the limit).
+// passed (at least one pass; the last pass may overrun the limit). `components`, if given,
+// records the per-strategy or per-path-length images as well.
 TimedRender timedRender(const SceneFile& file, const Integrator& integrator, Film& film, int spp,
-                        int threads, uint64_t seed, double timeLimit = 0);
+                        int threads, uint64_t seed, double timeLimit = 0,
+                        ComponentImages* components = nullptr);
 
 struct MachineInfo {
   std::string hostname, cpuModel;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 #include <tuple>
 
@@ -42,7 +43,7 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
   using GroupKey = std::tuple<std::string, int, int, std::string, int, int, std::string>;
   std::map<GroupKey, std::vector<const nlohmann::json*>> groups;
   using SpeedKey = std::tuple<std::string, int, int, std::string, int, int>;
-  std::map<SpeedKey, std::map<int, std::vector<double>>> speed;
+  std::map<SpeedKey, std::map<int, std::vector<double>>> speed, speedCpu;
   for (const nlohmann::json& r : records) {
     const std::string study = r.value("study", "");
     if (study == "convergence")
@@ -50,16 +51,18 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
               r.value("integrator", ""), r.value("max_bounces", 0), r.value("threads", 0),
               r.value("budget_type", "")}]
           .push_back(&r);
-    else if (study == "speedup")
-      speed[{r.value("scene", ""), r.value("width", 0), r.value("height", 0),
-             r.value("integrator", ""), r.value("max_bounces", 0), r.value("spp", 0)}]
-           [r.value("threads", 0)]
-               .push_back(r.value("wall_seconds", 0.0));
+    else if (study == "speedup") {
+      const SpeedKey key{r.value("scene", ""),      r.value("width", 0),       r.value("height", 0),
+                         r.value("integrator", ""), r.value("max_bounces", 0), r.value("spp", 0)};
+      speed[key][r.value("threads", 0)].push_back(r.value("wall_seconds", 0.0));
+      speedCpu[key][r.value("threads", 0)].push_back(r.value("cpu_seconds", 0.0));
+    }
   }
 
   nlohmann::json out = {{"convergence", nlohmann::json::array()},
                         {"best", nlohmann::json::array()},
                         {"speedup", nlohmann::json::array()},
+                        {"strategies", nlohmann::json::array()},
                         {"confidence", confidence}};
   // (scene, w, h, budget type, threads) -> integrator -> efficiency
   std::map<std::tuple<std::string, int, int, std::string, int>, std::map<std::string, double>>
@@ -144,6 +147,9 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
     for (const auto& [threads, times] : byThreads) {
       const double m = median(times);
       const double s = base / m;
+      // CPU seconds per wall second: how many cores the render really had. On a loaded
+      // machine it stays under the thread count, and so does the speed-up.
+      const double coresUsed = median(speedCpu[key][threads]) / std::max(m, 1e-12);
       out["speedup"].push_back({{"scene", scene},
                                 {"width", w},
                                 {"height", h},
@@ -155,8 +161,36 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
                                 {"repeats", times.size()},
                                 {"median_wall_seconds", m},
                                 {"speedup", s},
+                                {"cores_used", coresUsed},
                                 {"parallel_efficiency", s * fewest / std::max(threads, 1)}});
     }
+  }
+  for (const nlohmann::json& r : records) {
+    if (r.value("study", "") != "strategies" || !r.contains("strategies")) continue;
+    std::vector<nlohmann::json> ranked(r["strategies"].begin(), r["strategies"].end());
+    std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) {
+      return a.value("share", 0.0) > b.value("share", 0.0);
+    });
+    // The fewest strategies that together make kCarriedShare of the image carry it.
+    nlohmann::json carrying = nlohmann::json::array();
+    double carried = 0;
+    for (const nlohmann::json& st : ranked) {
+      if (carried >= kCarriedShare) break;
+      carried += st.value("share", 0.0);
+      carrying.push_back(st);
+    }
+    nlohmann::json entry = {{"scene", r.value("scene", "")},
+                            {"width", r.value("width", 0)},
+                            {"height", r.value("height", 0)},
+                            {"max_bounces", r.value("max_bounces", 0)},
+                            {"spp", r.value("spp", 0)},
+                            {"carried_share_target", kCarriedShare},
+                            {"carried_share", carried},
+                            {"carrying", carrying},
+                            {"ranked", ranked}};
+    if (r.contains("share_beyond_max_bounces"))
+      entry["share_beyond_max_bounces"] = r["share_beyond_max_bounces"];
+    out["strategies"].push_back(entry);
   }
   return out;
 }
@@ -189,14 +223,24 @@ std::string summaryText(const nlohmann::json& summary) {
   }
   if (!summary["speedup"].empty()) {
     s += "Speed-up (medians of alternating repeats)\n";
-    s += fmt::format("{:<18} {:<16} {:>7} {:>8} {:>12} {:>9} {:>11}\n", "scene", "integrator",
-                     "threads", "repeats", "median s", "speed-up", "par. eff.");
+    s +=
+        fmt::format("{:<18} {:<16} {:>7} {:>8} {:>12} {:>9} {:>11} {:>11}\n", "scene", "integrator",
+                    "threads", "repeats", "median s", "speed-up", "par. eff.", "cores used");
     for (const nlohmann::json& g : summary["speedup"])
-      s += fmt::format("{:<18} {:<16} {:>7} {:>8} {:>12.4f} {:>9.3f} {:>11.3f}\n",
+      s += fmt::format("{:<18} {:<16} {:>7} {:>8} {:>12.4f} {:>9.3f} {:>11.3f} {:>11.2f}\n",
                        g["scene"].get<std::string>(), g["integrator"].get<std::string>(),
                        g["threads"].get<int>(), g["repeats"].get<size_t>(),
                        g["median_wall_seconds"].get<double>(), g["speedup"].get<double>(),
-                       g["parallel_efficiency"].get<double>());
+                       g["parallel_efficiency"].get<double>(), g["cores_used"].get<double>());
+  }
+  for (const nlohmann::json& g : summary["strategies"]) {
+    std::string list;
+    for (const nlohmann::json& st : g["carrying"])
+      list += fmt::format("{}(s={}, t={}) {:.1f}%", list.empty() ? "" : ", ", st["s"].get<int>(),
+                          st["t"].get<int>(), 100 * st["share"].get<double>());
+    s += fmt::format("BDPT strategies carrying {:.0f}% of {} ({} spp, max bounces {}): {}\n",
+                     100 * g["carried_share"].get<double>(), g["scene"].get<std::string>(),
+                     g["spp"].get<int>(), g["max_bounces"].get<int>(), list);
   }
   return s;
 }

@@ -22,6 +22,9 @@ namespace verity::studies {
 // integrator and its ratio to every other. "speedup" records give, per (scene, integrator, spp),
 // the median wall time per thread count, speed-up = median time at the fewest threads / median
 // time, parallel efficiency = speed-up · fewest threads / threads.
+// "strategies" records (one BDPT render each) give, per render, the strategies ranked by
+// their share of the image and the fewest of them that carry kCarriedShare of it.
+inline constexpr double kCarriedShare = 0.9;
 nlohmann::json summarize(const std::vector<nlohmann::json>& records, double confidence = 0.95);
 
 // The summary as text tables (what `verity study` prints and the Markdown report shows).

@@ -121,5 +121,36 @@ TEST(QuickStudy, CornellBoxEndToEnd) {
   fs::remove_all(dir);
 }
 
+// The strategies study: the MIS-weighted strategy images add up to the image, so the shares
+// add up to 1 (to float rounding); a second run with the same arguments is skipped, and the
+// summary names fewer strategies than there are that carry at least kCarriedShare.
+TEST(QuickStudy, StrategiesSharesAddUpAndResume) {
+  const fs::path dir =
+      fs::path(testing::TempDir()) / ("verity-strategies-study-" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  StrategiesConfig config;
+  config.scene = fs::path(VERITY_SOURCE_DIR) / "scenes" / "cornell-box.json";
+  config.spp = 8;
+  config.resolution = 16;
+  config.maxBounces = 3;
+  config.output = dir / "strategies.jsonl";
+  EXPECT_EQ(runStrategiesStudy(config, nullptr).done, 1);
+  EXPECT_EQ(runStrategiesStudy(config, nullptr).skipped, 1);
+  const std::vector<nlohmann::json> records = readJsonLines(config.output);
+  ASSERT_EQ(records.size(), 1u);
+  double total = 0;
+  for (const nlohmann::json& st : records[0]["strategies"]) total += st["share"].get<double>();
+  EXPECT_NEAR(total, 1.0, 1e-4);
+  EXPECT_EQ(records[0]["strategies"].size(), 14u);  // (s, t) with s + t − 2 ≤ 3, t ≥ 1
+
+  const nlohmann::json summary = summarize(records);
+  ASSERT_EQ(summary["strategies"].size(), 1u);
+  const nlohmann::json& g = summary["strategies"][0];
+  EXPECT_GE(g["carried_share"].get<double>(), kCarriedShare);
+  EXPECT_LT(g["carrying"].size(), g["ranked"].size());
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace verity::studies
