@@ -117,11 +117,19 @@ void BsdfSubject::checkPair(const Vector3f& wo, Audit& audit) const {
 }
 
 std::vector<double> BsdfSubject::breakpointsY(double phi) const {
-  // The shading horizon n·ω = 0 at azimuth φ: with a = nx cos φ + ny sin φ,
-  // a·√(1 − z²) + nz·z = 0 gives z = −a / √(a² + nz²).
+  // The shading horizon n·ω = 0.
   const Vector3d n = frame_.n.cast<double>();
-  const double a = n.x() * std::cos(phi) + n.y() * std::sin(phi);
-  return {-a / std::sqrt(a * a + n.z() * n.z())};
+  std::vector<double> z = coneCrossings(n, 0, phi);
+  if (setup_.ior != 1) {
+    // Transmission ends where the generalised half vector −(ηi ωi + ηo ωo) turns
+    // perpendicular to n (Walter et al. 2007, eq. 16), i.e. on the cone
+    // n·ωo = −ηi (n·ωi) / ηo; a distribution with D > 0 at the horizon (GGX at large
+    // alpha) jumps there.
+    const double cosI = wiLocal_.z();
+    const double etaI = cosI > 0 ? 1.0 : setup_.ior, etaO = cosI > 0 ? setup_.ior : 1.0;
+    for (double c : coneCrossings(n, -etaI * cosI / etaO, phi)) z.push_back(c);
+  }
+  return z;
 }
 
 std::vector<Point2d> BsdfSubject::peaks() const {

@@ -69,4 +69,17 @@ Point2d sphereCoords(const Vector3f& v) {
   return {phi, std::clamp(d.z(), -1.0, 1.0)};
 }
 
+std::vector<double> coneCrossings(const Vector3d& axis, double cosAngle, double phi) {
+  // On the meridian, ω = (cos β·m, sin β) with m = (cos φ, sin φ, 0): ω·axis = a cos β +
+  // axis.z sin β = R cos(β − ψ), with a = m·axis, R = √(a² + axis.z²), ψ = atan2(axis.z, a).
+  const double a = axis.x() * std::cos(phi) + axis.y() * std::sin(phi);
+  const double R = std::hypot(a, axis.z()), psi = std::atan2(axis.z(), a);
+  std::vector<double> z;
+  if (!(R > 0) || std::fabs(cosAngle) > R) return z;
+  const double spread = std::acos(cosAngle / R);
+  for (double beta : {psi - spread, psi + spread})
+    if (std::fabs(beta) <= std::numbers::pi / 2) z.push_back(std::sin(beta));
+  return z;
+}
+
 }  // namespace verity::chi2

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "core/math.h"
 
@@ -49,5 +50,8 @@ Domain triangleDomain(int cells);
 // Sphere parameterisation and its inverse (unit vectors; the inverse normalises in double).
 Vector3d sphereDirection(double phi, double z);
 Point2d sphereCoords(const Vector3f& v);
+// The cos θ values at azimuth φ where a direction meets the cone ω·axis = cosAngle (none,
+// one or two; a great circle when cosAngle = 0): where a density bounded by that cone jumps.
+std::vector<double> coneCrossings(const Vector3d& axis, double cosAngle, double phi);
 
 }  // namespace verity::chi2

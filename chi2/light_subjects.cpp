@@ -47,23 +47,16 @@ class LightSubject : public Subject {
   // splits there (a triangle's tip inside a cell is otherwise missed by every node).
   std::vector<double> breakpointsY(double phi) const override {
     if (setup_.sampling == LightSampling::SphereArea) return {};
-    std::vector<double> zs;
-    const Vector3d meridian(std::cos(phi), std::sin(phi), 0), m(-std::sin(phi), std::cos(phi), 0);
     if (sphere_) {
-      // The cone d·c = cos θmax meets the meridian d = (cos β·meridian, sin β) where
-      // R·cos(β − ψ) = cos θmax, with (R cos ψ, R sin ψ) = (meridian·c, c.z).
+      // The visible cone: d·c = cos θmax about the direction c to the centre.
       const Vector3d toCentre = (sphere_->center() - setup_.ref).cast<double>();
       const double dist = toCentre.norm(), r = sphere_->radius();
       if (dist <= r) return {};
-      const Vector3d c = toCentre / dist;
-      const double a = meridian.dot(c), R = std::hypot(a, c.z()), psi = std::atan2(c.z(), a);
-      const double k = std::sqrt(1 - (r / dist) * (r / dist)) / R;
-      if (k <= 1)
-        for (double beta : {psi + std::acos(k), psi - std::acos(k)})
-          if (std::fabs(beta) <= kPi / 2) zs.push_back(std::sin(beta));
-      return zs;
+      return coneCrossings(toCentre / dist, std::sqrt(1 - (r / dist) * (r / dist)), phi);
     }
     // Each edge (directions A, B from ref) crosses the meridian's plane where m·d = 0.
+    std::vector<double> zs;
+    const Vector3d meridian(std::cos(phi), std::sin(phi), 0), m(-std::sin(phi), std::cos(phi), 0);
     for (const auto& [A, B] : edges_) {
       const double den = m.dot(B - A);
       if (den == 0) continue;
