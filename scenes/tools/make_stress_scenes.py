@@ -13,7 +13,7 @@ FLOOR = {"type": "quad", "size": 8, "transform": {"axis": [1, 0, 0], "angle": -9
 DOWN = {"axis": [1, 0, 0], "angle": 90}  # a quad facing -y
 
 
-def scene(camera_from, camera_at, materials, surfaces, background=0, spp=8, vfov=40):
+def scene(camera_from, camera_at, materials, surfaces, background=0, spp=64, vfov=40):
     return {
         "camera": {"transform": {"from": camera_from, "at": camera_at, "up": [0, 1, 0]},
                    "vfov": vfov, "resolution": [32, 32]},
@@ -66,7 +66,8 @@ def coincident_surfaces():
 
 def degenerate_triangles():
     # Zero-area triangles (a repeated vertex, collinear vertices, all three equal), needle
-    # triangles 4 long and 1e-4 wide, one of them emitting, lit by a quad light.
+    # triangles 4 long and 1e-4 wide, an emitting needle and an emitting zero-area triangle,
+    # lit by a quad light.
     def tri(p, material):
         return {"type": "triangle", "positions": p, "material": material}
     return scene([0, 1.5, 5], [0, 0.5, 0],
@@ -82,6 +83,7 @@ def degenerate_triangles():
                   tri([[-2, 1.5, -0.5], [2, 1.6, -0.5], [2, 1.6001, -0.5]], "white"),
                   tri([[0.5, 0.01, -2], [0.5, 0.0101, 2], [0.5001, 0.01, 2]], "white"),
                   tri([[-2, 2, 0], [2, 2, 0.0001], [2, 2, 0]], "needle light"),
+                  tri([[-1, 2.5, 0], [0, 2.5, 0], [1, 2.5, 0]], "needle light"),
                   {"type": "quad", "size": 1.5, "transform": [DOWN, {"translate": [0, 3, 0]}],
                    "material": "light"}])
 
@@ -162,7 +164,7 @@ def scaled(factor):
                       "transform": {"translate": [1.2, 0.3, 0.8]}, "material": "white"},
                      {"type": "quad", "size": 1.5,
                       "transform": [DOWN, {"translate": [-0.8, 3, 1]}], "material": "light"}]}],
-                 background=0.2, spp=32, vfov=60)
+                 background=0.2, spp=256, vfov=60)
 
 
 SCENES = {
