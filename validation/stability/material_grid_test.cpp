@@ -179,8 +179,10 @@ TEST(MaterialGrid, NoNanInfOrNegativeAndVisibleNormalWeightsBoundedByFresnel) {
                 << "sample wi " << wi.transpose() << " u " << us[i].transpose() << " weight "
                 << s->weight.transpose() << " pdf " << s->pdf << " wo " << s->wo.transpose();
             if (!gm.bound || wi.z() <= 0 || s->wo.z() <= 0) continue;
-            // Visible-normal sampling: weight = tint·F(wi·h)·G2/G1(wi) ≤ tint·F, as G2 ≤ G1
-            // (Heitz 2018, "Sampling the GGX Distribution of Visible Normals", eq. 19).
+            // Visible-normal sampling: weight = tint·F(wi·h)·G2/G1(wi) (Heitz 2018, "Sampling
+            // the GGX Distribution of Visible Normals", JCGT 7(4)), and the height-correlated
+            // G2 never exceeds G1(wi) (Heitz 2014, "Understanding the Masking-Shadowing
+            // Function in Microfacet-Based BRDFs"), so weight ≤ tint·F.
             const Vector3f h = (wi + s->wo).normalized();
             const float cosH = wi.dot(h);
             const Color3 f =
