@@ -29,16 +29,18 @@ namespace {
 // amplitude ratios as for a dielectric.
 float conductorChannel(float cosThetaI, float eta, float k) {
   using C = std::complex<float>;
-  const C n(eta, k);
+  const C n(eta, k), n2 = n * n;
   const float sin2ThetaI = 1.0f - cosThetaI * cosThetaI;
-  const C cosThetaT = std::sqrt(C(1.0f) - C(sin2ThetaI) / (n * n));
-  const C denS = C(cosThetaI) + n * cosThetaT;
-  const C denP = n * C(cosThetaI) + cosThetaT;
+  // sin²θ / n² through the conjugate: std::complex division takes a slow library call.
+  const C cosThetaT = std::sqrt(C(1.0f) - sin2ThetaI * std::conj(n2) / std::norm(n2));
+  const float denS = std::norm(C(cosThetaI) + n * cosThetaT);
+  const float denP = std::norm(n * C(cosThetaI) + cosThetaT);
   // Both vanish only for an index-matched, loss-free "conductor" at grazing incidence.
-  if (std::norm(denS) == 0 || std::norm(denP) == 0) return 1.0f;
-  const C rs = (C(cosThetaI) - n * cosThetaT) / denS;
-  const C rp = (n * C(cosThetaI) - cosThetaT) / denP;
-  const float r = 0.5f * (std::norm(rs) + std::norm(rp));
+  if (denS == 0 || denP == 0) return 1.0f;
+  // |a / b|² = |a|² / |b|²: only the reflectances' magnitudes are needed.
+  const float rs = std::norm(C(cosThetaI) - n * cosThetaT) / denS;
+  const float rp = std::norm(n * C(cosThetaI) - cosThetaT) / denP;
+  const float r = 0.5f * (rs + rp);
   return std::isfinite(r) ? std::clamp(r, 0.0f, 1.0f) : 1.0f;
 }
 }  // namespace
