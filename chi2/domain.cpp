@@ -82,4 +82,20 @@ std::vector<double> coneCrossings(const Vector3d& axis, double cosAngle, double 
   return z;
 }
 
+std::vector<Point2d> coneTangentPoints(const Vector3d& axis, double cosAngle) {
+  // The meridian plane with normal m = (−sin φ, cos φ, 0) touches the cone when the axis
+  // makes the cone's half-angle with it: |axis·m| = sin(half-angle). The point of contact
+  // is the axis projected onto the plane, of length cos(half-angle).
+  const double sinAxis = std::hypot(axis.x(), axis.y());
+  const double sinHalf = std::sqrt(std::max(0.0, 1 - cosAngle * cosAngle));
+  if (!(sinHalf < sinAxis) || !(cosAngle > 0)) return {};
+  const double phiAxis = std::atan2(axis.y(), axis.x()), spread = std::asin(sinHalf / sinAxis);
+  std::vector<Point2d> points;
+  for (double phi : {phiAxis - spread, phiAxis + spread}) {
+    phi = std::fmod(phi + 4 * std::numbers::pi, 2 * std::numbers::pi);
+    points.emplace_back(phi, std::clamp(axis.z() / cosAngle, -1.0, 1.0));
+  }
+  return points;
+}
+
 }  // namespace verity::chi2

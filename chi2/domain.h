@@ -53,5 +53,9 @@ Point2d sphereCoords(const Vector3f& v);
 // The cos θ values at azimuth φ where a direction meets the cone ω·axis = cosAngle (none,
 // one or two; a great circle when cosAngle = 0): where a density bounded by that cone jumps.
 std::vector<double> coneCrossings(const Vector3d& axis, double cosAngle, double phi);
+// The points (φ, cos θ) where a meridian touches that cone: the ends of its range in φ (none
+// when the cone holds a pole). Across them the length of the cone's chord along a meridian
+// grows like √|Δφ|, a singularity of the integral over φ.
+std::vector<Point2d> coneTangentPoints(const Vector3d& axis, double cosAngle);
 
 }  // namespace verity::chi2

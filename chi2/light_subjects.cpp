@@ -48,11 +48,8 @@ class LightSubject : public Subject {
   std::vector<double> breakpointsY(double phi) const override {
     if (setup_.sampling == LightSampling::SphereArea) return {};
     if (sphere_) {
-      // The visible cone: d·c = cos θmax about the direction c to the centre.
-      const Vector3d toCentre = (sphere_->center() - setup_.ref).cast<double>();
-      const double dist = toCentre.norm(), r = sphere_->radius();
-      if (dist <= r) return {};
-      return coneCrossings(toCentre / dist, std::sqrt(1 - (r / dist) * (r / dist)), phi);
+      const std::optional<Cone> cone = visibleCone();
+      return cone ? coneCrossings(cone->axis, cone->cosAngle, phi) : std::vector<double>{};
     }
     // Each edge (directions A, B from ref) crosses the meridian's plane where m·d = 0.
     std::vector<double> zs;
@@ -66,6 +63,12 @@ class LightSubject : public Subject {
       if (p.dot(meridian) > 0) zs.push_back(p.z() / p.norm());
     }
     return zs;
+  }
+
+  std::vector<Point2d> peaks() const override {
+    if (setup_.sampling == LightSampling::SphereArea || !sphere_) return {};
+    const std::optional<Cone> cone = visibleCone();
+    return cone ? coneTangentPoints(cone->axis, cone->cosAngle) : std::vector<Point2d>{};
   }
 
   const Domain& domain() const override { return domain_; }
@@ -121,6 +124,18 @@ class LightSubject : public Subject {
   }
 
  private:
+  struct Cone {
+    Vector3d axis;
+    double cosAngle;
+  };
+  // The sphere as seen from ref: d·c = cos θmax about the direction c to the centre.
+  std::optional<Cone> visibleCone() const {
+    const Vector3d toCentre = (sphere_->center() - setup_.ref).cast<double>();
+    const double dist = toCentre.norm(), r = sphere_->radius();
+    if (dist <= r) return std::nullopt;
+    return Cone{toCentre / dist, std::sqrt(1 - (r / dist) * (r / dist))};
+  }
+
   static std::optional<Point2d> checked(const Vector3f& d, float pdf, Audit& audit) {
     if (!d.allFinite() || !std::isfinite(pdf) || !(pdf > 0)) {
       audit.record(Defect::NonFinite,

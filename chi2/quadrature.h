@@ -33,7 +33,12 @@ struct QuadratureOptions {
   double relTolerance = 1e-5;
   // The outer integral sees the inner integrals' errors as noise, so it is looser.
   double outerRelTolerance = 1e-4;
-  unsigned maxDepth = 8;
+  // Declared jumps and peaks are resolved by graded cuts, so a piece still unconverged after
+  // six bisections is a staircase of the single-precision density (grazing Beckmann and GGX,
+  // an index near 1: steps of 1-4%), which more depth only refines. Measured on 22 sample
+  // tests against depth 11 and 10x tighter tolerances: total error 7.8e-7 at depth 6,
+  // 5.9e-7 at depth 8, 1.0e-5 at depth 4; a full sweep at depth 6 runs 20% faster.
+  unsigned maxDepth = 6;
   // The whole grid's error budget, shared equally by the cells: a cell whose pilot
   // estimate is small is integrated to a looser relative tolerance, never looser than
   // maxRelTolerance. With 2,048 cells and 10⁶ samples this is far below both the
