@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "chi2/chi_square.h"
+#include "chi2/domain.h"
 #include "chi2/integral_check.h"
 #include "chi2/quadrature.h"
 #include "chi2/significance.h"
@@ -85,6 +86,23 @@ TEST(FrameworkQuadrature, DiskAndTriangleSupports) {
            d, {}))
     total += c.value;
   EXPECT_NEAR(total, 1.0, 1e-6);
+}
+
+TEST(FrameworkDomain, ConeTangentPointsBoundTheConesAzimuths) {
+  // A cone of half-angle 20° about an axis 50° from the pole: its tangent points lie on the
+  // cone, meridians just inside them cross it twice and meridians just outside never.
+  const Vector3d axis = sphereDirection(1.0, std::cos(50 * std::numbers::pi / 180));
+  const double cosAngle = std::cos(20 * std::numbers::pi / 180);
+  const std::vector<Point2d> points = coneTangentPoints(axis, cosAngle);
+  ASSERT_EQ(points.size(), 2u);
+  for (const Point2d& p : points) {
+    EXPECT_NEAR(sphereDirection(p.x(), p.y()).dot(axis), cosAngle, 1e-12);
+    const double inward = p.x() < 1.0 ? 1e-6 : -1e-6;
+    EXPECT_EQ(coneCrossings(axis, cosAngle, p.x() + inward).size(), 2u);
+    EXPECT_TRUE(coneCrossings(axis, cosAngle, p.x() - inward).empty());
+  }
+  // A cone that holds the pole spans every azimuth: no tangent points.
+  EXPECT_TRUE(coneTangentPoints(axis, std::cos(60 * std::numbers::pi / 180)).empty());
 }
 
 TEST(FrameworkSuite, AtLeast600Configurations) {
