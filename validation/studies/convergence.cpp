@@ -63,6 +63,28 @@ std::string strategiesKey(const nlohmann::json& r) {
                      r.value("height", 0), r.value("max_bounces", 0), r.value("spp", 0));
 }
 
+// The fields that say which render a record is of; its key is drawn from them.
+nlohmann::json recordHeader(const std::string& study, const std::filesystem::path& scene,
+                            const Vector2i& resolution, const IntegratorSettings& settings) {
+  return {
+      {"study", study},
+      {"scene", scene.stem().string()},
+      {"scene_file", scene.string()},
+      {"width", resolution.x()},
+      {"height", resolution.y()},
+      {"integrator", settings.type},
+      {"max_bounces", settings.maxBounces},
+  };
+}
+
+// The fields that say where and when a record was measured.
+nlohmann::json provenance(const MachineInfo& machine, const std::string& revision) {
+  return {
+      {"hostname", machine.hostname}, {"cpu_model", machine.cpuModel}, {"cores", machine.cores},
+      {"revision", revision},         {"time", timestamp()},
+  };
+}
+
 // Mean over pixels and channels of a film's pixel means.
 double imageMean(const Film& film) {
   double sum = 0;
@@ -122,19 +144,13 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
     for (int run = 0; run < config.runs; ++run)
       for (double budget : config.budgets)
         for (const Prepared& p : integrators) {
-          nlohmann::json record = {
-              {"study", "convergence"},
-              {"scene", sceneName},
-              {"scene_file", config.scene.string()},
-              {"width", resolution.x()},
-              {"height", resolution.y()},
-              {"integrator", p.type},
-              {"max_bounces", p.settings.maxBounces},
+          nlohmann::json record = recordHeader("convergence", config.scene, resolution, p.settings);
+          record.update({
               {"threads", threadCounts[ti]},
               {"budget_type", config.budgetType},
               {"budget", budget},
               {"run", run},
-          };
+          });
           if (done.count(convergenceKey(record))) {
             ++progress.skipped;
             continue;
@@ -162,12 +178,8 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
               {"reference_spp", attribute("verity:spp")},
               {"reference_integrator", attribute("verity:integrator")},
               {"reference_rel_mse", referenceOwnRelMse},
-              {"hostname", machine.hostname},
-              {"cpu_model", machine.cpuModel},
-              {"cores", machine.cores},
-              {"revision", revision},
-              {"time", timestamp()},
           });
+          record.update(provenance(machine, revision));
           if (config.errorImages && ti == 0 && run == 0 && budget == largestBudget) {
             std::filesystem::create_directories(imageDir);
             const std::filesystem::path npy =
@@ -197,7 +209,6 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
 StudyProgress runSpeedupStudy(const SpeedupConfig& config,
                               const std::function<void(const std::string&)>& log) {
   if (config.threads.empty()) throw VerityError("", "--threads", "no thread count given");
-  const std::string sceneName = config.scene.stem().string();
   const SceneFile file = loadStudyScene(config.scene, config.resolution);
   std::vector<Prepared> integrators =
       prepareIntegrators(file, config.integrators, config.maxBounces);
@@ -213,18 +224,8 @@ StudyProgress runSpeedupStudy(const SpeedupConfig& config,
     if (repeat % 2) std::reverse(order.begin(), order.end());
     for (int threads : order)
       for (const Prepared& p : integrators) {
-        nlohmann::json record = {
-            {"study", "speedup"},
-            {"scene", sceneName},
-            {"scene_file", config.scene.string()},
-            {"width", resolution.x()},
-            {"height", resolution.y()},
-            {"integrator", p.type},
-            {"max_bounces", p.settings.maxBounces},
-            {"threads", threads},
-            {"spp", config.spp},
-            {"repeat", repeat},
-        };
+        nlohmann::json record = recordHeader("speedup", config.scene, resolution, p.settings);
+        record.update({{"threads", threads}, {"spp", config.spp}, {"repeat", repeat}});
         if (done.count(speedupKey(record))) {
           ++progress.skipped;
           continue;
@@ -237,12 +238,8 @@ StudyProgress runSpeedupStudy(const SpeedupConfig& config,
             {"wall_seconds", timed.wallSeconds},
             {"cpu_seconds", timed.cpuSeconds},
             {"rays", timed.stats.rays},
-            {"hostname", machine.hostname},
-            {"cpu_model", machine.cpuModel},
-            {"cores", machine.cores},
-            {"revision", revision},
-            {"time", timestamp()},
         });
+        record.update(provenance(machine, revision));
         appendJsonLine(config.output, record);
         done.insert(speedupKey(record));
         ++progress.done;
@@ -260,7 +257,6 @@ StudyProgress runSpeedupStudy(const SpeedupConfig& config,
 
 StudyProgress runStrategiesStudy(const StrategiesConfig& config,
                                  const std::function<void(const std::string&)>& log) {
-  const std::string sceneName = config.scene.stem().string();
   std::optional<ImageChannels> reference;
   if (!config.reference.empty()) reference = readExr(config.reference);
   const SceneFile file = loadStudyScene(config.scene, config.resolution > 0 ? config.resolution
@@ -271,16 +267,8 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
   const Vector2i resolution = file.scene->camera().resolution();
   const int threads = config.threads > 0 ? config.threads : std::max(1, machineInfo().cores);
 
-  nlohmann::json record = {
-      {"study", "strategies"},
-      {"scene", sceneName},
-      {"scene_file", config.scene.string()},
-      {"width", resolution.x()},
-      {"height", resolution.y()},
-      {"integrator", settings.type},
-      {"max_bounces", settings.maxBounces},
-      {"spp", config.spp},
-  };
+  nlohmann::json record = recordHeader("strategies", config.scene, resolution, settings);
+  record["spp"] = config.spp;
   StudyProgress progress;
   progress.total = 1;
   if (existingKeys(config.output, "strategies", strategiesKey).count(strategiesKey(record))) {
@@ -313,12 +301,8 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
                  {"cpu_seconds", timed.cpuSeconds},
                  {"invalid_samples", timed.stats.invalidSamples},
                  {"image_mean", total},
-                 {"strategies", strategies},
-                 {"hostname", machine.hostname},
-                 {"cpu_model", machine.cpuModel},
-                 {"cores", machine.cores},
-                 {"revision", sourceRevision()},
-                 {"time", timestamp()}});
+                 {"strategies", strategies}});
+  record.update(provenance(machine, sourceRevision()));
   if (reference) {
     // The share of the full image (the reference's max bounces) that paths longer than
     // max_bounces carry, which no strategy here sees.
