@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include "validation/studies/convergence.h"
+#include "validation/studies/speedup.h"
+#include "validation/studies/strategies.h"
 #include "validation/studies/study_util.h"
 #include "validation/studies/summary.h"
 

@@ -3,15 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <map>
-#include <memory>
-#include <optional>
-#include <set>
 
 #include "core/error.h"
-#include "core/hash.h"
-#include "render/component_images.h"
-#include "validation/studies/study_util.h"
 
 namespace verity::studies {
 
@@ -22,75 +15,6 @@ std::string convergenceKey(const nlohmann::json& r) {
                      r.value("height", 0), r.value("integrator", ""), r.value("max_bounces", 0),
                      r.value("threads", 0), r.value("budget_type", ""), r.value("budget", 0.0),
                      r.value("run", 0));
-}
-
-std::string speedupKey(const nlohmann::json& r) {
-  return fmt::format("{}|{}x{}|{}|{}|{}|{}|{}", r.value("scene", ""), r.value("width", 0),
-                     r.value("height", 0), r.value("integrator", ""), r.value("max_bounces", 0),
-                     r.value("threads", 0), r.value("spp", 0), r.value("repeat", 0));
-}
-
-std::set<std::string> existingKeys(const std::filesystem::path& file, const std::string& study,
-                                   std::string (*key)(const nlohmann::json&)) {
-  std::set<std::string> keys;
-  for (const nlohmann::json& r : readJsonLines(file))
-    if (r.value("study", "") == study) keys.insert(key(r));
-  return keys;
-}
-
-struct Prepared {
-  std::string type;
-  IntegratorSettings settings;
-  std::unique_ptr<Integrator> integrator;
-};
-
-std::vector<Prepared> prepareIntegrators(const SceneFile& file,
-                                         const std::vector<std::string>& names, int maxBounces) {
-  if (names.empty()) throw VerityError("", "--integrators", "no integrator given");
-  std::vector<Prepared> out;
-  for (const std::string& name : names) {
-    Prepared p;
-    p.settings = studyIntegrator(file, name, maxBounces);
-    p.type = p.settings.type;
-    p.integrator = makeIntegrator(p.settings);
-    out.push_back(std::move(p));
-  }
-  return out;
-}
-
-std::string strategiesKey(const nlohmann::json& r) {
-  return fmt::format("{}|{}x{}|{}|{}", r.value("scene", ""), r.value("width", 0),
-                     r.value("height", 0), r.value("max_bounces", 0), r.value("spp", 0));
-}
-
-// The fields that say which render a record is of; its key is drawn from them.
-nlohmann::json recordHeader(const std::string& study, const std::filesystem::path& scene,
-                            const Vector2i& resolution, const IntegratorSettings& settings) {
-  return {
-      {"study", study},
-      {"scene", scene.stem().string()},
-      {"scene_file", scene.string()},
-      {"width", resolution.x()},
-      {"height", resolution.y()},
-      {"integrator", settings.type},
-      {"max_bounces", settings.maxBounces},
-  };
-}
-
-// The fields that say where and when a record was measured.
-nlohmann::json provenance(const MachineInfo& machine, const std::string& revision) {
-  return {
-      {"hostname", machine.hostname}, {"cpu_model", machine.cpuModel}, {"cores", machine.cores},
-      {"revision", revision},         {"time", timestamp()},
-  };
-}
-
-// Mean over pixels and channels of a film's pixel means.
-double imageMean(const Film& film) {
-  double sum = 0;
-  for (int y = 0; y < film.height(); ++y)
-    for (int x = 0; x < film.width(); ++x) sum += double(film.mean(x, y).sum());
-  return sum / (3.0 * film.width() * film.height());
 }
 
 }  // namespace
@@ -121,7 +45,7 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
   // comparison reports the mismatch).
   const SceneFile file =
       loadStudyScene(config.scene, config.resolution > 0 ? config.resolution : reference.width);
-  std::vector<Prepared> integrators =
+  std::vector<PreparedIntegrator> integrators =
       prepareIntegrators(file, config.integrators, config.maxBounces);
   const Vector2i resolution = file.scene->camera().resolution();
 
@@ -143,7 +67,7 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
   for (size_t ti = 0; ti < config.threads.size(); ++ti)
     for (int run = 0; run < config.runs; ++run)
       for (double budget : config.budgets)
-        for (const Prepared& p : integrators) {
+        for (const PreparedIntegrator& p : integrators) {
           nlohmann::json record = recordHeader("convergence", config.scene, resolution, p.settings);
           record.update({
               {"threads", threadCounts[ti]},
@@ -155,7 +79,7 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
             ++progress.skipped;
             continue;
           }
-          const uint64_t seed = runSeed(p.type, config.budgetType, budget, run);
+          const uint64_t seed = runSeed(p.settings.type, config.budgetType, budget, run);
           Film film(resolution);
           const bool byTime = config.budgetType == "time";
           const TimedRender timed =
@@ -183,7 +107,7 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
           if (config.errorImages && ti == 0 && run == 0 && budget == largestBudget) {
             std::filesystem::create_directories(imageDir);
             const std::filesystem::path npy =
-                imageDir / fmt::format("{}_{}_{}{}.npy", sceneName, p.type, budget,
+                imageDir / fmt::format("{}_{}_{}{}.npy", sceneName, p.settings.type, budget,
                                        config.budgetType == "spp" ? "spp" : "s");
             writeNpy(npy, relativeErrorImage(film, reference), film.width(), film.height());
             record["error_image"] =
@@ -199,128 +123,10 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
             log(
                 fmt::format("[{}/{}] {} threads={} {}={} run={}: {} spp, {:.3f} s wall, {:.3f} s "
                             "CPU, relMSE {:.4g}",
-                            progress.done + progress.skipped, progress.total, p.type,
+                            progress.done + progress.skipped, progress.total, p.settings.type,
                             threadCounts[ti], config.budgetType, budget, run, timed.stats.passes,
                             timed.wallSeconds, timed.cpuSeconds, error.relMse));
         }
-  return progress;
-}
-
-StudyProgress runSpeedupStudy(const SpeedupConfig& config,
-                              const std::function<void(const std::string&)>& log) {
-  if (config.threads.empty()) throw VerityError("", "--threads", "no thread count given");
-  const SceneFile file = loadStudyScene(config.scene, config.resolution);
-  std::vector<Prepared> integrators =
-      prepareIntegrators(file, config.integrators, config.maxBounces);
-  const Vector2i resolution = file.scene->camera().resolution();
-  const MachineInfo machine = machineInfo();
-  const std::string revision = sourceRevision();
-  std::set<std::string> done = existingKeys(config.output, "speedup", speedupKey);
-
-  StudyProgress progress;
-  progress.total = int(config.repeats * integrators.size() * config.threads.size());
-  for (int repeat = 0; repeat < config.repeats; ++repeat) {
-    std::vector<int> order = config.threads;
-    if (repeat % 2) std::reverse(order.begin(), order.end());
-    for (int threads : order)
-      for (const Prepared& p : integrators) {
-        nlohmann::json record = recordHeader("speedup", config.scene, resolution, p.settings);
-        record.update({{"threads", threads}, {"spp", config.spp}, {"repeat", repeat}});
-        if (done.count(speedupKey(record))) {
-          ++progress.skipped;
-          continue;
-        }
-        const uint64_t seed = runSeed(p.type, "speedup", config.spp, 0);
-        Film film(resolution);
-        const TimedRender timed = timedRender(file, *p.integrator, film, config.spp, threads, seed);
-        record.update({
-            {"seed", seed},
-            {"wall_seconds", timed.wallSeconds},
-            {"cpu_seconds", timed.cpuSeconds},
-            {"rays", timed.stats.rays},
-        });
-        record.update(provenance(machine, revision));
-        appendJsonLine(config.output, record);
-        done.insert(speedupKey(record));
-        ++progress.done;
-        if (log)
-          log(
-              fmt::format("[{}/{}] {} threads={} repeat={}: {:.3f} s wall, {:.3f} s CPU, {:.3g} "
-                          "Mrays/s",
-                          progress.done + progress.skipped, progress.total, p.type, threads, repeat,
-                          timed.wallSeconds, timed.cpuSeconds,
-                          timed.stats.rays / std::max(timed.wallSeconds, 1e-9) / 1e6));
-      }
-  }
-  return progress;
-}
-
-StudyProgress runStrategiesStudy(const StrategiesConfig& config,
-                                 const std::function<void(const std::string&)>& log) {
-  std::optional<ImageChannels> reference;
-  if (!config.reference.empty()) reference = readExr(config.reference);
-  const SceneFile file = loadStudyScene(config.scene, config.resolution > 0 ? config.resolution
-                                                      : reference           ? reference->width
-                                                                            : 0);
-  const IntegratorSettings settings = studyIntegrator(file, "bdpt", config.maxBounces);
-  const auto integrator = makeIntegrator(settings);
-  const Vector2i resolution = file.scene->camera().resolution();
-  const int threads = config.threads > 0 ? config.threads : std::max(1, machineInfo().cores);
-
-  nlohmann::json record = recordHeader("strategies", config.scene, resolution, settings);
-  record["spp"] = config.spp;
-  StudyProgress progress;
-  progress.total = 1;
-  if (existingKeys(config.output, "strategies", strategiesKey).count(strategiesKey(record))) {
-    progress.skipped = 1;
-    return progress;
-  }
-  ComponentImages components(
-      ComponentLayout(ComponentLayout::Kind::Strategies, settings.maxBounces), resolution);
-  const uint64_t seed = runSeed(settings.type, "strategies", config.spp, 0);
-  Film film(resolution);
-  const TimedRender timed =
-      timedRender(file, *integrator, film, config.spp, threads, seed, 0, &components);
-  const double total = imageMean(film);
-  nlohmann::json strategies = nlohmann::json::array();
-  const ComponentLayout& layout = components.layout();
-  for (int i = 0; i < layout.size(); ++i) {
-    const ComponentLayout::Component& c = layout[i];
-    if (!c.weighted) continue;
-    const double mean = imageMean(components.film(i));
-    strategies.push_back({{"s", c.s},
-                          {"t", c.t},
-                          {"bounces", c.bounces},
-                          {"mean", mean},
-                          {"share", total > 0 ? mean / total : 0.0}});
-  }
-  const MachineInfo machine = machineInfo();
-  record.update({{"threads", threads},
-                 {"seed", seed},
-                 {"wall_seconds", timed.wallSeconds},
-                 {"cpu_seconds", timed.cpuSeconds},
-                 {"invalid_samples", timed.stats.invalidSamples},
-                 {"image_mean", total},
-                 {"strategies", strategies}});
-  record.update(provenance(machine, sourceRevision()));
-  if (reference) {
-    // The share of the full image (the reference's max bounces) that paths longer than
-    // max_bounces carry, which no strategy here sees.
-    double sum = 0;
-    for (const char* c : {"R", "G", "B"})
-      for (float v : reference->planes.at(c)) sum += std::isfinite(v) ? v : 0;
-    const double full = sum / (3.0 * reference->width * reference->height);
-    const auto it = reference->attributes.find("verity:max_bounces");
-    record["reference"] = config.reference.string();
-    record["reference_mean"] = full;
-    record["reference_max_bounces"] = it == reference->attributes.end() ? "" : it->second;
-    record["share_beyond_max_bounces"] = full > 0 ? 1 - total / full : 0.0;
-  }
-  appendJsonLine(config.output, record);
-  progress.done = 1;
-  if (log)
-    log(fmt::format("bdpt strategies, {} spp, max bounces {}: {:.3f} s wall, {} strategies",
-                    config.spp, settings.maxBounces, timed.wallSeconds, strategies.size()));
   return progress;
 }
 

@@ -1,0 +1,70 @@
+#include "validation/studies/speedup.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "core/error.h"
+
+namespace verity::studies {
+
+namespace {
+
+std::string speedupKey(const nlohmann::json& r) {
+  return fmt::format("{}|{}x{}|{}|{}|{}|{}|{}", r.value("scene", ""), r.value("width", 0),
+                     r.value("height", 0), r.value("integrator", ""), r.value("max_bounces", 0),
+                     r.value("threads", 0), r.value("spp", 0), r.value("repeat", 0));
+}
+
+}  // namespace
+
+StudyProgress runSpeedupStudy(const SpeedupConfig& config,
+                              const std::function<void(const std::string&)>& log) {
+  if (config.threads.empty()) throw VerityError("", "--threads", "no thread count given");
+  const SceneFile file = loadStudyScene(config.scene, config.resolution);
+  std::vector<PreparedIntegrator> integrators =
+      prepareIntegrators(file, config.integrators, config.maxBounces);
+  const Vector2i resolution = file.scene->camera().resolution();
+  const MachineInfo machine = machineInfo();
+  const std::string revision = sourceRevision();
+  std::set<std::string> done = existingKeys(config.output, "speedup", speedupKey);
+
+  StudyProgress progress;
+  progress.total = int(config.repeats * integrators.size() * config.threads.size());
+  for (int repeat = 0; repeat < config.repeats; ++repeat) {
+    std::vector<int> order = config.threads;
+    if (repeat % 2) std::reverse(order.begin(), order.end());
+    for (int threads : order)
+      for (const PreparedIntegrator& p : integrators) {
+        nlohmann::json record = recordHeader("speedup", config.scene, resolution, p.settings);
+        record.update({{"threads", threads}, {"spp", config.spp}, {"repeat", repeat}});
+        if (done.count(speedupKey(record))) {
+          ++progress.skipped;
+          continue;
+        }
+        const uint64_t seed = runSeed(p.settings.type, "speedup", config.spp, 0);
+        Film film(resolution);
+        const TimedRender timed = timedRender(file, *p.integrator, film, config.spp, threads, seed);
+        record.update({
+            {"seed", seed},
+            {"wall_seconds", timed.wallSeconds},
+            {"cpu_seconds", timed.cpuSeconds},
+            {"rays", timed.stats.rays},
+        });
+        record.update(provenance(machine, revision));
+        appendJsonLine(config.output, record);
+        done.insert(speedupKey(record));
+        ++progress.done;
+        if (log)
+          log(
+              fmt::format("[{}/{}] {} threads={} repeat={}: {:.3f} s wall, {:.3f} s CPU, {:.3g} "
+                          "Mrays/s",
+                          progress.done + progress.skipped, progress.total, p.settings.type,
+                          threads, repeat, timed.wallSeconds, timed.cpuSeconds,
+                          timed.stats.rays / std::max(timed.wallSeconds, 1e-9) / 1e6));
+      }
+  }
+  return progress;
+}
+
+}  // namespace verity::studies

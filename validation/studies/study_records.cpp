@@ -1,0 +1,49 @@
+#include "validation/studies/study_records.h"
+
+#include "core/error.h"
+
+namespace verity::studies {
+
+std::vector<PreparedIntegrator> prepareIntegrators(const SceneFile& file,
+                                                   const std::vector<std::string>& names,
+                                                   int maxBounces) {
+  if (names.empty()) throw VerityError("", "--integrators", "no integrator given");
+  std::vector<PreparedIntegrator> out;
+  for (const std::string& name : names) {
+    PreparedIntegrator p;
+    p.settings = studyIntegrator(file, name, maxBounces);
+    p.integrator = makeIntegrator(p.settings);
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
+std::set<std::string> existingKeys(const std::filesystem::path& file, const std::string& study,
+                                   std::string (*key)(const nlohmann::json&)) {
+  std::set<std::string> keys;
+  for (const nlohmann::json& r : readJsonLines(file))
+    if (r.value("study", "") == study) keys.insert(key(r));
+  return keys;
+}
+
+nlohmann::json recordHeader(const std::string& study, const std::filesystem::path& scene,
+                            const Vector2i& resolution, const IntegratorSettings& settings) {
+  return {
+      {"study", study},
+      {"scene", scene.stem().string()},
+      {"scene_file", scene.string()},
+      {"width", resolution.x()},
+      {"height", resolution.y()},
+      {"integrator", settings.type},
+      {"max_bounces", settings.maxBounces},
+  };
+}
+
+nlohmann::json provenance(const MachineInfo& machine, const std::string& revision) {
+  return {
+      {"hostname", machine.hostname}, {"cpu_model", machine.cpuModel}, {"cores", machine.cores},
+      {"revision", revision},         {"time", timestamp()},
+  };
+}
+
+}  // namespace verity::studies
