@@ -61,12 +61,21 @@ Vector3d sphereDirection(double phi, double z) {
   return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
+namespace {
+// An azimuth in (−2π, 4π) brought into [0, 2π).
+double wrapAzimuth(double phi) {
+  constexpr double twoPi = 2 * std::numbers::pi;
+  if (phi < 0)
+    phi += twoPi;
+  else if (phi >= twoPi)
+    phi -= twoPi;
+  return phi < twoPi ? phi : 0;  // a tiny negative φ + 2π rounds to 2π
+}
+}  // namespace
+
 Point2d sphereCoords(const Vector3f& v) {
   const Vector3d d = v.cast<double>().normalized();
-  double phi = std::atan2(d.y(), d.x());
-  if (phi < 0) phi += 2 * std::numbers::pi;
-  if (phi >= 2 * std::numbers::pi) phi = 0;
-  return {phi, std::clamp(d.z(), -1.0, 1.0)};
+  return {wrapAzimuth(std::atan2(d.y(), d.x())), std::clamp(d.z(), -1.0, 1.0)};
 }
 
 std::vector<double> coneCrossings(const Vector3d& axis, double cosAngle, double phi) {
@@ -91,10 +100,8 @@ std::vector<Point2d> coneTangentPoints(const Vector3d& axis, double cosAngle) {
   if (!(sinHalf < sinAxis) || !(cosAngle > 0)) return {};
   const double phiAxis = std::atan2(axis.y(), axis.x()), spread = std::asin(sinHalf / sinAxis);
   std::vector<Point2d> points;
-  for (double phi : {phiAxis - spread, phiAxis + spread}) {
-    phi = std::fmod(phi + 4 * std::numbers::pi, 2 * std::numbers::pi);
-    points.emplace_back(phi, std::clamp(axis.z() / cosAngle, -1.0, 1.0));
-  }
+  for (double phi : {phiAxis - spread, phiAxis + spread})
+    points.emplace_back(wrapAzimuth(phi), std::clamp(axis.z() / cosAngle, -1.0, 1.0));
   return points;
 }
 
