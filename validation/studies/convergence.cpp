@@ -51,7 +51,7 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
 
   const MachineInfo machine = machineInfo();
   const std::string revision = sourceRevision();
-  std::set<std::string> done = existingKeys(config.output, "convergence", convergenceKey);
+  StudyOutput output(config.output, "convergence", convergenceKey);
   const double largestBudget = *std::max_element(config.budgets.begin(), config.budgets.end());
   const std::filesystem::path imageDir =
       config.output.parent_path() / (config.output.stem().string() + "-images");
@@ -75,7 +75,7 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
               {"budget", budget},
               {"run", run},
           });
-          if (done.count(convergenceKey(record))) {
+          if (output.has(record)) {
             ++progress.skipped;
             continue;
           }
@@ -116,8 +116,7 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
                                                    : config.output.parent_path())
                     .string();
           }
-          appendJsonLine(config.output, record);
-          done.insert(convergenceKey(record));
+          output.append(record);
           ++progress.done;
           if (log)
             log(

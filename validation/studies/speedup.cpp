@@ -27,7 +27,7 @@ StudyProgress runSpeedupStudy(const SpeedupConfig& config,
   const Vector2i resolution = file.scene->camera().resolution();
   const MachineInfo machine = machineInfo();
   const std::string revision = sourceRevision();
-  std::set<std::string> done = existingKeys(config.output, "speedup", speedupKey);
+  StudyOutput output(config.output, "speedup", speedupKey);
 
   StudyProgress progress;
   progress.total = int(config.repeats * integrators.size() * config.threads.size());
@@ -38,7 +38,7 @@ StudyProgress runSpeedupStudy(const SpeedupConfig& config,
       for (const PreparedIntegrator& p : integrators) {
         nlohmann::json record = recordHeader("speedup", config.scene, resolution, p.settings);
         record.update({{"threads", threads}, {"spp", config.spp}, {"repeat", repeat}});
-        if (done.count(speedupKey(record))) {
+        if (output.has(record)) {
           ++progress.skipped;
           continue;
         }
@@ -52,8 +52,7 @@ StudyProgress runSpeedupStudy(const SpeedupConfig& config,
             {"rays", timed.stats.rays},
         });
         record.update(provenance(machine, revision));
-        appendJsonLine(config.output, record);
-        done.insert(speedupKey(record));
+        output.append(record);
         ++progress.done;
         if (log)
           log(

@@ -42,7 +42,8 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
   record["spp"] = config.spp;
   StudyProgress progress;
   progress.total = 1;
-  if (existingKeys(config.output, "strategies", strategiesKey).count(strategiesKey(record))) {
+  StudyOutput output(config.output, "strategies", strategiesKey);
+  if (output.has(record)) {
     progress.skipped = 1;
     return progress;
   }
@@ -87,7 +88,7 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
     record["reference_max_bounces"] = it == reference->attributes.end() ? "" : it->second;
     record["share_beyond_max_bounces"] = full > 0 ? 1 - total / full : 0.0;
   }
-  appendJsonLine(config.output, record);
+  output.append(record);
   progress.done = 1;
   if (log)
     log(fmt::format("bdpt strategies, {} spp, max bounces {}: {:.3f} s wall, {} strategies",

@@ -18,12 +18,15 @@ std::vector<PreparedIntegrator> prepareIntegrators(const SceneFile& file,
   return out;
 }
 
-std::set<std::string> existingKeys(const std::filesystem::path& file, const std::string& study,
-                                   std::string (*key)(const nlohmann::json&)) {
-  std::set<std::string> keys;
-  for (const nlohmann::json& r : readJsonLines(file))
-    if (r.value("study", "") == study) keys.insert(key(r));
-  return keys;
+StudyOutput::StudyOutput(std::filesystem::path file, const std::string& study, Key key)
+    : file_(std::move(file)), key_(key) {
+  for (const nlohmann::json& r : readJsonLines(file_))
+    if (r.value("study", "") == study) done_.insert(key_(r));
+}
+
+void StudyOutput::append(const nlohmann::json& record) {
+  appendJsonLine(file_, record);
+  done_.insert(key_(record));
 }
 
 nlohmann::json recordHeader(const std::string& study, const std::filesystem::path& scene,

@@ -28,9 +28,21 @@ std::vector<PreparedIntegrator> prepareIntegrators(const SceneFile& file,
                                                    const std::vector<std::string>& names,
                                                    int maxBounces);
 
-// The keys, by `key`, of the records of `study` already in `file` (none if it is missing).
-std::set<std::string> existingKeys(const std::filesystem::path& file, const std::string& study,
-                                   std::string (*key)(const nlohmann::json&));
+// A study's JSON Lines output and the keys of the records of that study already in it, so
+// that a resumed study skips what it has done.
+class StudyOutput {
+ public:
+  using Key = std::string (*)(const nlohmann::json&);
+  StudyOutput(std::filesystem::path file, const std::string& study, Key key);
+  bool has(const nlohmann::json& record) const { return done_.count(key_(record)) > 0; }
+  // Appends the record, flushed to the file before returning.
+  void append(const nlohmann::json& record);
+
+ private:
+  std::filesystem::path file_;
+  Key key_;
+  std::set<std::string> done_;
+};
 
 // The fields that say which render a record is of; its key is drawn from them.
 nlohmann::json recordHeader(const std::string& study, const std::filesystem::path& scene,
