@@ -60,6 +60,34 @@ RenderStats timedRender(const SceneFile& file, const Integrator& integrator, int
   return render(*file.scene, integrator, *file.sampler, film, options);
 }
 
+// The rays one single-threaded sample of `integrator` traces, on average, logged from a render
+// at 1 spp (independent samples, so any sample count gives the same mix of rays).
+struct SampleRays {
+  RayLog log;
+  uint64_t samples = 0;
+};
+
+void logSampleRays(const SceneFile& file, const Integrator& integrator, const Vector2i& resolution,
+                   SampleRays& out) {
+  file.scene->setRayLog(&out.log);
+  out.samples = timedRender(file, integrator, 1, 1, resolution).samples;
+  file.scene->setRayLog(nullptr);
+}
+
+// Time per sample of the logged rays traced again on their own, in order, on one thread: the
+// cost of the ray queries apart from the integrator's other work.
+double replayedSecondsPerSample(const Scene& scene, const SampleRays& rays) {
+  const auto start = std::chrono::steady_clock::now();
+  for (const LoggedRay& r : rays.log.rays()) {
+    SurfaceInteraction si;
+    if (r.shadow)
+      scene.occluded(r.ray);
+    else
+      scene.intersect(r.ray, si);
+  }
+  return seconds(std::chrono::steady_clock::now() - start) / rays.samples;
+}
+
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
@@ -77,16 +105,26 @@ int runBdpt(const SceneFile& file, const BenchArgs& args) {
   const Vector2i resolution = file.scene->camera().resolution();
   fmt::print("scene {}: {}×{}, {} spp, max_bounces {}: bdpt vs path_tracer_nee\n", file.name,
              resolution.x(), resolution.y(), args.spp, bdptSettings.maxBounces);
-  std::vector<double> ptOne, bdptOne, ratio, speedup;
+  SampleRays ptLog, bdptLog;
+  logSampleRays(file, *pt, resolution, ptLog);
+  logSampleRays(file, *bdpt, resolution, bdptLog);
+  std::vector<double> ptOne, bdptOne, ratio, speedup, ptRayTime, bdptRayTime, bdptRayRatio;
   double ptRays = 0, bdptRays = 0;  // per sample (the same in every repeat: seeded)
   for (int r = 0; r < args.repeats; ++r) {
     const RenderStats a = timedRender(file, *pt, args.spp, 1, resolution);
     const RenderStats b = timedRender(file, *bdpt, args.spp, 1, resolution);
     const RenderStats b2 = timedRender(file, *bdpt, args.spp, 2, resolution);
+    const double ptReplay =
+        tbb::task_arena(1).execute([&] { return replayedSecondsPerSample(*file.scene, ptLog); });
+    const double bdptReplay =
+        tbb::task_arena(1).execute([&] { return replayedSecondsPerSample(*file.scene, bdptLog); });
     ptOne.push_back(a.seconds / a.samples);
     bdptOne.push_back(b.seconds / b.samples);
     ratio.push_back(bdptOne.back() / ptOne.back());
     speedup.push_back(b.seconds / b2.seconds);
+    ptRayTime.push_back(ptReplay);
+    bdptRayTime.push_back(bdptReplay);
+    bdptRayRatio.push_back(bdptReplay / ptOne.back());
     ptRays = double(a.rays) / a.samples;
     bdptRays = double(b.rays) / b.samples;
   }
@@ -97,6 +135,17 @@ int runBdpt(const SceneFile& file, const BenchArgs& args) {
       "bdpt, 1 thread:            {:8.3f} µs/sample  ({:.3f} Msamples/s, {:.2f} rays/sample)\n",
       1e6 * median(bdptOne), 1e-6 / median(bdptOne), bdptRays);
   fmt::print("bdpt / path_tracer_nee time per sample: {:.2f}x  (target <= 2x)\n", median(ratio));
+  // What the rays alone cost bounds the ratio from below, however fast the rest becomes.
+  const double ptRayShare = median(ptRayTime) / median(ptOne);
+  const double bdptRayShare = median(bdptRayTime) / median(bdptOne);
+  fmt::print(
+      "rays alone, replayed:   path_tracer_nee {:.3f} µs/sample ({:.0f}% of its time), "
+      "bdpt {:.3f} µs/sample ({:.0f}%)\n",
+      1e6 * median(ptRayTime), 100 * ptRayShare, 1e6 * median(bdptRayTime), 100 * bdptRayShare);
+  fmt::print("bdpt's rays alone / path_tracer_nee's whole sample: {:.2f}x\n", median(bdptRayRatio));
+  fmt::print("work besides rays: path_tracer_nee {:.3f} µs/sample, bdpt {:.3f} µs/sample\n",
+             1e6 * (median(ptOne) - median(ptRayTime)),
+             1e6 * (median(bdptOne) - median(bdptRayTime)));
   fmt::print("bdpt speedup at 2 threads:              {:.2f}x  (target >= 1.9x)\n",
              median(speedup));
   fmt::print("medians of {} alternating repeats\n", args.repeats);

@@ -114,6 +114,7 @@ void Scene::finalize() {
 }
 
 bool Scene::intersect(const Ray& ray, SurfaceInteraction& si) const {
+  if (rayLog_) rayLog_->add(ray, false);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh;
@@ -144,6 +145,7 @@ bool Scene::intersect(const Ray& ray, SurfaceInteraction& si) const {
 }
 
 bool Scene::occluded(const Ray& ray) const {
+  if (rayLog_) rayLog_->add(ray, true);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay r;

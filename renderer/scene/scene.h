@@ -13,6 +13,7 @@
 #include "lights/environment_light.h"
 #include "materials/material.h"
 #include "sampling/distribution.h"
+#include "scene/ray_log.h"
 #include "shapes/shape.h"
 
 namespace verity {
@@ -43,6 +44,8 @@ class Scene {
 
   bool intersect(const Ray& ray, SurfaceInteraction& si) const;
   bool occluded(const Ray& ray) const;
+  // Every ray traced from now on is also appended to `log` (null: none; the default).
+  void setRayLog(RayLog* log) { rayLog_ = log; }
 
   const Camera& camera() const { return *camera_; }
   // Null when the background is black (it then emits nothing and is never looked up).
@@ -77,6 +80,7 @@ class Scene {
   SceneSummary summary_;
   Bounds3f bounds_;
   float sceneScale_ = 1, radius_ = 1;
+  RayLog* rayLog_ = nullptr;
 };
 
 }  // namespace verity
