@@ -7,6 +7,8 @@ namespace verity {
 Camera::Camera(const Transform& toWorld, const Vector2i& resolution, float vfovDegrees,
                float focusDistance, float lensRadius)
     : toWorld_(toWorld),
+      toCameraLinear_(toWorld.inverseMatrix().topLeftCorner<3, 3>()),
+      toCameraOffset_(toWorld.inverseMatrix().topRightCorner<3, 1>()),
       resolution_(resolution),
       focusDistance_(focusDistance),
       lensRadius_(lensRadius) {
@@ -45,24 +47,13 @@ std::optional<Point2f> Camera::filmFromCameraSpace(const Point3f& lens, const Ve
   return film;
 }
 
-namespace {
-// World to camera space through the stored inverse (no copy of the transform).
-Point3f toCameraPoint(const Transform& toWorld, const Point3f& p) {
-  const Matrix4f& inv = toWorld.inverseMatrix();
-  return inv.topLeftCorner<3, 3>() * p + inv.topRightCorner<3, 1>();
-}
-Vector3f toCameraDirection(const Transform& toWorld, const Vector3f& d) {
-  return (toWorld.inverseMatrix().topLeftCorner<3, 3>() * d).normalized();
-}
-}  // namespace
-
 std::optional<Point2f> Camera::filmPosition(const Point3f& lensPoint, const Vector3f& d) const {
-  return filmFromCameraSpace(toCameraPoint(toWorld_, lensPoint), toCameraDirection(toWorld_, d));
+  return filmFromCameraSpace(toCameraPoint(lensPoint), toCameraDirection(d));
 }
 
 float Camera::importance(const Point3f& lensPoint, const Vector3f& d, Point2f* film) const {
-  const Vector3f dir = toCameraDirection(toWorld_, d);
-  const auto position = filmFromCameraSpace(toCameraPoint(toWorld_, lensPoint), dir);
+  const Vector3f dir = toCameraDirection(d);
+  const auto position = filmFromCameraSpace(toCameraPoint(lensPoint), dir);
   if (!position) return 0;
   if (film) *film = *position;
   const float cos2 = dir.z() * dir.z();
@@ -71,7 +62,7 @@ float Camera::importance(const Point3f& lensPoint, const Vector3f& d, Point2f* f
 
 void Camera::pdfImportance(const Point3f& lensPoint, const Vector3f& d, float* pdfPos,
                            float* pdfDir) const {
-  const Vector3f dir = toCameraDirection(toWorld_, d);
+  const Vector3f dir = toCameraDirection(d);
   *pdfPos = 1.0f / lensArea();
   const float cosTheta = -dir.z();
   *pdfDir = 0;
@@ -92,7 +83,7 @@ std::optional<CameraImportanceSample> Camera::sampleImportance(const Point3f& re
   s.distance = toLens.norm();
   if (!(s.distance > 0)) return std::nullopt;
   s.wi = toLens / s.distance;
-  const Vector3f dir = toCameraDirection(toWorld_, -s.wi);
+  const Vector3f dir = toCameraDirection(-s.wi);
   const auto film = filmFromCameraSpace(lens, dir);
   if (!film) return std::nullopt;
   s.film = *film;

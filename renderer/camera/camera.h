@@ -59,12 +59,18 @@ class Camera {
 
  private:
   Transform toWorld_;
+  // World to camera space, kept apart from the 4×4 inverse for the per-connection queries.
+  Eigen::Matrix3f toCameraLinear_;
+  Vector3f toCameraOffset_;
   Vector2i resolution_;
   float halfHeight_, halfWidth_;  // of the image plane at distance 1
   float focusDistance_, lensRadius_;
 
-  // Camera-space unit direction of a world direction, and the film position it reaches from
-  // camera-space lens point `lens` (film plane at distance 1).
+  // World points, and world directions as unit vectors, in camera space.
+  Point3f toCameraPoint(const Point3f& p) const { return toCameraLinear_ * p + toCameraOffset_; }
+  Vector3f toCameraDirection(const Vector3f& d) const { return (toCameraLinear_ * d).normalized(); }
+  // The film position that camera-space unit direction `dir` reaches from camera-space lens
+  // point `lens` (film plane at distance 1).
   std::optional<Point2f> filmFromCameraSpace(const Point3f& lens, const Vector3f& dir) const;
 };
 
