@@ -7,6 +7,7 @@
 
 #include <chrono>
 
+#include "integrators/integrator_settings.h"
 #include "render/renderer.h"
 #include "sampling/independent_sampler.h"
 #include "sampling/warp.h"
@@ -203,7 +204,7 @@ void addBenchCommand(CLI::App& app) {
                   "Image width, the scene's aspect kept (default: the scene's resolution)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--max-bounces", args->maxBounces, "Maximum bounces (default: the scene's)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, kMaxBouncesLimit));
   cmd->add_flag("--bdpt", args->bdpt,
                 "Time bdpt against path_tracer_nee per sample, and bdpt's 2-thread speedup");
   cmd->add_option("--repeats", args->repeats, "Alternating repeats (medians are reported)")

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <new>
 
 #include "app/bench_command.h"
 #include "app/compare_command.h"
@@ -28,6 +29,9 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const verity::VerityError& e) {
     fmt::print(stderr, "verity: error: {}\n", e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "verity: error: out of memory (the scene or image is too large)\n");
     return 1;
   } catch (const std::exception& e) {
     fmt::print(stderr, "verity: error: {}\n", e.what());

@@ -1,8 +1,8 @@
 #include "app/reference_command.h"
 
-
 #include <fmt/format.h>
 
+#include "integrators/integrator_settings.h"
 #include "validation/studies/reference.h"
 
 namespace verity {
@@ -19,7 +19,7 @@ void addReferenceCommand(CLI::App& app) {
   cmd->add_option("--integrator", config->integrator, "Integrator type (default: the scene's)");
   cmd->add_option("--max-bounces", config->maxBounces,
                   "Maximum scattering events per path (default: the scene's)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, kMaxBouncesLimit));
   cmd->add_option("--threads", config->threads, "Worker threads (default: all cores)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--resolution", config->resolution,

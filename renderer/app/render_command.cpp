@@ -3,8 +3,11 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <fstream>
+
 #include "app/component_output.h"
 #include "film/image_io.h"
+#include "integrators/integrator_settings.h"
 #include "render/interrupt.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
@@ -33,6 +36,20 @@ std::string lowerExtension(const std::filesystem::path& p) {
   return e;
 }
 
+// Fails before a render, not after it, when an output file cannot be created: tries to create
+// a probe file beside it (permission bits alone do not tell, for instance for root).
+void checkWritable(const std::filesystem::path& output) {
+  const std::filesystem::path dir =
+      output.parent_path().empty() ? std::filesystem::path(".") : output.parent_path();
+  std::error_code error;
+  if (!std::filesystem::is_directory(dir, error))
+    throw VerityError("", "-o", "the output's directory does not exist: \"" + dir.string() + "\"");
+  const std::filesystem::path probe = output.string() + ".verity-probe";
+  if (!std::ofstream(probe))
+    throw VerityError("", "-o", "cannot create files in \"" + dir.string() + "\"");
+  std::filesystem::remove(probe, error);
+}
+
 int run(const RenderArgs& args) {
   SceneFile file = loadScene(args.scene);
   IntegratorSettings settings = file.integrator;
@@ -57,6 +74,8 @@ int run(const RenderArgs& args) {
       throw VerityError("", "-o", "the output must end in .exr or .png: \"" + args.output + "\"");
     outputs = {args.output};
   }
+
+  for (const auto& out : outputs) checkWritable(out);
 
   const Vector2i& resolution = file.scene->camera().resolution();
   const bool splitsStrategies = !args.strategies.empty();
@@ -142,7 +161,7 @@ void addRenderCommand(CLI::App& app) {
                   "light_tracer");
   cmd->add_option("--max-bounces", args->maxBounces,
                   "Maximum scattering events per path (0: emitters seen directly)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, kMaxBouncesLimit));
   cmd->add_option("-o,--output", args->output,
                   "Output .exr or .png (default: <scene name>.exr and .png here)");
   cmd->add_flag("--variance", args->variance,

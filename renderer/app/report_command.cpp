@@ -1,6 +1,5 @@
 #include "app/report_command.h"
 
-
 #include <fmt/format.h>
 
 #include "validation/studies/report.h"

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "integrators/integrator_settings.h"
 #include "validation/studies/convergence.h"
 #include "validation/studies/speedup.h"
 #include "validation/studies/strategies.h"
@@ -57,7 +58,7 @@ void addConvergence(CLI::App& study) {
   cmd->add_option("--resolution", config->resolution, "Image width (default: the reference's)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--max-bounces", config->maxBounces, "Maximum scattering events per path")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, kMaxBouncesLimit));
   cmd->add_flag("--no-error-images", *noImages,
                 "Do not save relative-error images at the largest budget");
   cmd->callback([=] {
@@ -98,7 +99,7 @@ void addSpeedup(CLI::App& study) {
   cmd->add_option("--resolution", config->resolution, "Image width (default: the scene's)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--max-bounces", config->maxBounces, "Maximum scattering events per path")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, kMaxBouncesLimit));
   cmd->add_option("-o,--output", *output, "Results file (JSON Lines; appended to)")
       ->capture_default_str();
   cmd->callback([=] {
@@ -123,7 +124,7 @@ void addStrategies(CLI::App& study) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--max-bounces", config->maxBounces, "Maximum scattering events per path")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, kMaxBouncesLimit));
   cmd->add_option("--resolution", config->resolution,
                   "Image width (default: the reference's, else the scene's)")
       ->check(CLI::PositiveNumber);

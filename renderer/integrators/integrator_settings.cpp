@@ -31,7 +31,7 @@ IntegratorSettings parseIntegratorSettings(const JsonNode* node) {
                            "\" (expected normals, ao, path_tracer_mats, path_tracer_nee, "
                            "path_tracer_mis, bdpt or light_tracer)");
   if (s.type.rfind("path_tracer", 0) == 0 || s.type == "bdpt" || s.type == "light_tracer")
-    s.maxBounces = node->getInt({"max_bounces", "max bounces"}, s.maxBounces, 0, 1 << 20);
+    s.maxBounces = node->getInt({"max_bounces", "max bounces"}, s.maxBounces, 0, kMaxBouncesLimit);
   if (s.type == "path_tracer_mis" || s.type == "bdpt")
     s.misPower = node->getFloat({"power"}, s.misPower, Range{0, 16, true, false});
   if (s.type == "ao") s.aoDistance = node->getFloat({"distance"}, s.aoDistance, Range::positive());

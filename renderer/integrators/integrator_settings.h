@@ -12,6 +12,10 @@
 
 namespace verity {
 
+// The largest max_bounces a scene or a command line may ask for (paths end by roulette long
+// before; the limit keeps vertex counts such as max_bounces + 2 far from overflow).
+inline constexpr int kMaxBouncesLimit = 1 << 20;
+
 struct IntegratorSettings {
   std::string type = "path_tracer_mats";
   int maxBounces = 64;

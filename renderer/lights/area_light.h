@@ -25,7 +25,9 @@ class AreaLight : public Light {
   // Densities of sampleLe choosing a point (per area) and direction w there (per solid angle;
   // 0 behind the front normal n).
   void pdfLe(const Normal3f& n, const Vector3f& w, float* pdfPos, float* pdfDir) const;
-  Color3 power(float sceneRadius) const override { return radiance_ * kPi * shape_.area(); }
+  double power(double sceneRadius) const override {
+    return double{luminance(radiance_)} * kPi * shape_.area();
+  }
   const Shape& shape() const { return shape_; }
 
  private:

@@ -83,8 +83,8 @@ float EnvironmentLight::pdfLi(const Vector3f& d) const {
   return distribution_.pdf(uv) / (2 * kPi * kPi * sinTheta);
 }
 
-Color3 EnvironmentLight::power(float sceneRadius) const {
-  return average_ * (4 * kPi) * (kPi * sceneRadius * sceneRadius);
+double EnvironmentLight::power(double sceneRadius) const {
+  return double{luminance(average_)} * (4 * kPi) * (kPi * sceneRadius * sceneRadius);
 }
 
 std::optional<LightEmission> EnvironmentLight::sampleLe(const Point2f& uPos, const Point2f& uDir,

@@ -30,7 +30,7 @@ class EnvironmentLight : public Light {
   // on the disk, per solid angle of the direction.
   void pdfLe(const Vector3f& towardsEnvironment, float sceneRadius, float* pdfPos,
              float* pdfDir) const;
-  Color3 power(float sceneRadius) const override;
+  double power(double sceneRadius) const override;
   bool isInfinite() const override { return true; }
   bool isBlackEverywhere() const { return !image_ && isBlack(constant_); }
 

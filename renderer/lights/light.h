@@ -35,8 +35,10 @@ class Light {
  public:
   virtual ~Light() = default;
   virtual std::optional<LightSample> sampleLi(const Point3f& ref, const Point2f& u) const = 0;
-  // Total emitted power (for choosing among lights); needs the scene's bounding radius.
-  virtual Color3 power(float sceneRadius) const = 0;
+  // Luminance of the total emitted power (for choosing among lights); needs the scene's
+  // bounding radius. In double precision: a bright or large emitter's power can exceed the
+  // single-precision range even where its radiance does not.
+  virtual double power(double sceneRadius) const = 0;
   virtual bool isInfinite() const { return false; }
   // Samples an emitted ray: `uPos` chooses the origin, `uDir` the direction. The scene's
   // bounding sphere (center, radius) places the environment's emitting disk.

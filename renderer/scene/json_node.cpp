@@ -4,7 +4,9 @@
 
 #include <cctype>
 #include <fstream>
+#include <optional>
 #include <sstream>
+#include <vector>
 
 namespace verity {
 
@@ -31,6 +33,34 @@ std::pair<size_t, size_t> lineColumn(const std::string& text, size_t offset) {
   }
   return {line, column};
 }
+// Scenes nest a few levels (groups, blends, textures); the readers recurse once per level.
+constexpr int kMaxNesting = 64;
+
+// The path of a value nested deeper than kMaxNesting (searched without recursion), or
+// nullopt when there is none.
+std::optional<std::string> tooDeeplyNested(const nlohmann::json& root) {
+  struct Entry {
+    const nlohmann::json* value;
+    std::string path;
+    int depth;
+  };
+  std::vector<Entry> stack{{&root, "", 0}};
+  while (!stack.empty()) {
+    Entry e = std::move(stack.back());
+    stack.pop_back();
+    if (e.depth > kMaxNesting) return e.path;
+    if (e.value->is_object()) {
+      for (const auto& item : e.value->items())
+        stack.push_back(
+            {&item.value(), e.path.empty() ? item.key() : e.path + "." + item.key(), e.depth + 1});
+    } else if (e.value->is_array()) {
+      for (size_t i = 0; i < e.value->size(); ++i)
+        stack.push_back({&(*e.value)[i], fmt::format("{}[{}]", e.path, i), e.depth + 1});
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 bool Range::contains(float v) const {
@@ -84,6 +114,9 @@ JsonNode JsonNode::parse(const std::string& text, const std::filesystem::path& f
   }
   if (!root->is_object())
     throw VerityError(file.string(), "", "the scene must be a JSON object, not " + typeName(*root));
+  if (const auto path = tooDeeplyNested(*root))
+    throw VerityError(file.string(), *path,
+                      fmt::format("nested deeper than {} levels", kMaxNesting));
   return JsonNode(root, root.get(), "", source);
 }
 

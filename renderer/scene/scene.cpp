@@ -90,12 +90,12 @@ void Scene::finalize() {
   for (const auto& l : areaLights_) {
     l->index = lights_.size();
     lights_.push_back(l.get());
-    powers.push_back(luminance(l->power(radius_)));
+    powers.push_back(l->power(radius_));
   }
   if (background_) {
     background_->index = lights_.size();
     lights_.push_back(background_.get());
-    powers.push_back(luminance(background_->power(radius_)));
+    powers.push_back(background_->power(radius_));
   }
   lightDistribution_ = Distribution1D(powers);
 

@@ -11,14 +11,29 @@ namespace verity {
 
 namespace {
 
+// The most pixels an image may have (8192²): the film keeps several channels per pixel.
+constexpr int64_t kMaxPixels = int64_t{1} << 26;
+
+const std::string kExtentProblem =
+    "lies outside the supported extent: every coordinate must be within ±1e15";
+
+bool withinExtent(const Point3f& p) {
+  return p.cwiseAbs().maxCoeff() <= kMaxSceneCoordinate;  // false for NaN too
+}
+
 std::unique_ptr<Camera> parseCamera(const JsonNode& node) {
   if (!node.isObject()) node.fail("expected a camera object");
   const Transform toWorld = parseOptionalTransform(node);
+  if (!withinExtent(toWorld.point(Point3f::Zero()))) node[{"transform"}].fail(kExtentProblem);
   Vector2i resolution(512, 512);
-  if (auto r = node.find({"resolution"})) resolution = r->asVector2i(1, 1 << 15);
+  if (auto r = node.find({"resolution"})) {
+    resolution = r->asVector2i(1, 1 << 15);
+    if (int64_t{resolution.x()} * resolution.y() > kMaxPixels)
+      r->fail("the image must have at most 8192 × 8192 pixels in all");
+  }
   const float vfov = node.getFloat({"vfov"}, 90, Range{0, 180, true, true});
-  const float fdist = node.getFloat({"fdist"}, 1, Range::positive());
-  const float aperture = node.getFloat({"aperture"}, 0, Range::nonNegative());
+  const float fdist = node.getFloat({"fdist"}, 1, Range{0, kMaxSceneCoordinate, true, false});
+  const float aperture = node.getFloat({"aperture"}, 0, Range{0, kMaxSceneCoordinate});
   node.rejectUnknownKeys();
   return std::make_unique<Camera>(toWorld, resolution, vfov, fdist, aperture);
 }
@@ -101,6 +116,8 @@ class SurfaceParser {
       node[{"type"}].fail("unknown surface type \"" + type +
                           "\" (expected sphere, quad, mesh, triangle or group)");
     }
+    const Bounds3f bounds = shape->bounds();
+    if (!withinExtent(bounds.lo) || !withinExtent(bounds.hi)) node.fail(kExtentProblem);
     auto material = materials_.reference(node[{"material"}]);
     node.rejectUnknownKeys();
     scene_.addShape(std::move(shape), std::move(material));

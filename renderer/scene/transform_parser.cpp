@@ -62,6 +62,10 @@ Matrix4f parseOne(const JsonNode& node) {
     const JsonNode mat = node[{"matrix"}];
     if (!mat.isArray() || mat.size() != 16) mat.fail("expected an array of 16 numbers (row-major)");
     for (int i = 0; i < 16; ++i) m(i / 4, i % 4) = mat[i].asFloat();
+    // Points, directions and normals are transformed affinely; a projective row would be
+    // applied to some of them and not to others.
+    if (m.row(3) != Eigen::RowVector4f(0, 0, 0, 1))
+      mat.fail("the last row must be [0, 0, 0, 1] (an affine transform)");
   }
   if (forms == 0)
     node.fail(

@@ -10,6 +10,7 @@
 
 #include "child_process.h"
 #include "film/image_io.h"
+#include "test_directory.h"
 
 namespace verity {
 namespace {
@@ -27,11 +28,7 @@ const char* kScene = R"({
 class ComponentOutput : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("verity_component_output_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
+    dir_ = testing::freshTestDirectory("verity_component_output_");
     scene_ = (dir_ / "scene.json").string();
     std::ofstream(scene_) << kScene;
   }

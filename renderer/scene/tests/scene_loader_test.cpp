@@ -203,7 +203,52 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{R"("materials": [{"type": "lambertian"}])",
                   "materials[0]: missing required key \"name\""},
         ErrorCase{R"("materials": [{"type": "diffuse light", "name": "l", "emit": 1e39}])",
-                  "materials[0].emit"}));
+                  "materials[0].emit"},
+        // Far-away geometry would put ray origins beyond what Embree accepts.
+        ErrorCase{
+            R"("surfaces": [{"type": "sphere", "material": {"type": "lambertian"}, "transform": {"translate": [1e24, 0, 0]}}])",
+            "surfaces[0]: lies outside the supported extent"},
+        ErrorCase{
+            R"("surfaces": [{"type": "group", "transform": {"scale": 1e10}, "children": [{"type": "quad", "size": 1e6, "material": {"type": "lambertian"}}]}])",
+            "surfaces[0].children[0]: lies outside the supported extent"},
+        ErrorCase{
+            R"("surfaces": [{"type": "quad", "material": {"type": "lambertian"}, "transform": {"matrix": [1,0,0,0, 0,1,0,0, 0,0,1,1, 1,0,0,1]}}])",
+            "surfaces[0].transform.matrix: the last row must be [0, 0, 0, 1]"}));
+
+// Builds a value nested `depth` levels deep: groups, blends or textures recurse once per level.
+std::string nestedGroups(int depth) {
+  std::string open, close;
+  for (int i = 0; i < depth; ++i) {
+    open += R"({"type": "group", "children": [)";
+    close += "]}";
+  }
+  return R"("surfaces": [)" + open + R"({"type": "sphere", "material": {"type": "lambertian"}})" +
+         close + "]";
+}
+
+TEST(SceneLoaderErrors, DeepNestingIsAnErrorNotAStackOverflow) {
+  EXPECT_NO_THROW(loadSceneText(sceneWith(nestedGroups(20)), "/tmp/nested.json"));
+  for (int depth : {40, 100000}) {
+    const std::string message = loadError(sceneWith(nestedGroups(depth)));
+    EXPECT_NE(message.find("nested deeper than 64 levels"), std::string::npos) << depth;
+    EXPECT_NE(message.find("surfaces[0].children[0].children[0]"), std::string::npos) << depth;
+  }
+}
+
+TEST(SceneLoader, LightChoiceStaysFiniteForPowersBeyondSinglePrecision) {
+  // emit × π × area overflows a float; the light-selection probabilities must not.
+  SceneFile f = loadSceneText(sceneWith(R"(
+      "surfaces": [
+        {"type": "quad", "size": 4, "material": {"type": "diffuse light", "emit": 3e38}},
+        {"type": "quad", "size": 1, "material": {"type": "diffuse light", "emit": 1},
+         "transform": {"translate": [0, 0, 1]}}])"),
+                              "/tmp/bright.json");
+  const auto& lights = f.scene->lights();
+  ASSERT_EQ(lights.size(), 2u);
+  EXPECT_FLOAT_EQ(f.scene->lightPmf(lights[0]), 1.0f);
+  EXPECT_GE(f.scene->lightPmf(lights[1]), 0.0f);
+  EXPECT_LT(f.scene->lightPmf(lights[1]), 1e-30f);
+}
 
 TEST(SceneLoaderErrors, CameraValues) {
   auto cam = [](const std::string& body) { return loadError("{\"camera\": {" + body + "}}"); };
@@ -212,6 +257,12 @@ TEST(SceneLoaderErrors, CameraValues) {
   EXPECT_NE(cam(R"("vfov": 180)").find("camera.vfov"), std::string::npos);
   EXPECT_NE(cam(R"("fdist": 0)").find("camera.fdist"), std::string::npos);
   EXPECT_NE(cam(R"("aperture": -1)").find("camera.aperture"), std::string::npos);
+  EXPECT_NE(cam(R"("aperture": 1e30)").find("camera.aperture"), std::string::npos);
+  EXPECT_NE(cam(R"("fdist": 1e30)").find("camera.fdist"), std::string::npos);
+  EXPECT_NE(cam(R"("resolution": [32768, 32768])").find("camera.resolution: the image must have"),
+            std::string::npos);
+  EXPECT_NE(cam(R"("transform": {"translate": [0, 0, 1e20]})").find("camera.transform: lies"),
+            std::string::npos);
   EXPECT_NE(cam(R"("transform": {"from": [0,0,0], "at": [0,0,0]})").find("camera.transform"),
             std::string::npos);
   EXPECT_NE(loadError("{}").find("missing required key \"camera\""), std::string::npos);
