@@ -1,7 +1,10 @@
 #include "shapes/obj_loader.h"
 
+#include <fmt/format.h>
 #include <tiny_obj_loader.h>
 
+#include <charconv>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -23,8 +26,45 @@ MeshData loadObj(const std::filesystem::path& file, const Transform& toWorld,
   return parseObj(text.str(), name, toWorld, jsonPath);
 }
 
+namespace {
+
+// tinyobjloader reads a number it cannot parse, or a missing one, as 0. Checks every vertex
+// position (v: x y z [w] or x y z r g b), normal (vn: x y z) and texture coordinate
+// (vt: u [v [w]]) line first: each must hold that many finite numbers and nothing else.
+void checkVertexLines(const std::string& text, const std::string& name,
+                      const std::string& jsonPath) {
+  std::istringstream lines(text);
+  std::string line;
+  for (int number = 1; std::getline(lines, line); ++number) {
+    const size_t comment = line.find('#');
+    std::istringstream tokens(line.substr(0, comment));
+    std::string keyword, token;
+    if (!(tokens >> keyword) || (keyword != "v" && keyword != "vn" && keyword != "vt")) continue;
+    const auto fail = [&](const std::string& problem) {
+      throw VerityError("", jsonPath,
+                        fmt::format("mesh \"{}\", line {}: {}", name, number, problem));
+    };
+    int count = 0;
+    while (tokens >> token) {
+      float value = 0;
+      const char* end = token.data() + token.size();
+      const auto [ptr, error] = std::from_chars(token.data(), end, value);
+      if (error != std::errc() || ptr != end || !std::isfinite(value))
+        fail("\"" + token + "\" is not a finite number");
+      ++count;
+    }
+    const bool countOk = keyword == "v"    ? (count >= 3 && count <= 4) || count == 6
+                         : keyword == "vn" ? count == 3
+                                           : count >= 1 && count <= 3;
+    if (!countOk) fail(fmt::format("\"{}\" with {} numbers", keyword, count));
+  }
+}
+
+}  // namespace
+
 MeshData parseObj(const std::string& text, const std::string& name, const Transform& toWorld,
                   const std::string& jsonPath) {
+  checkVertexLines(text, name, jsonPath);
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
@@ -46,8 +86,15 @@ MeshData parseObj(const std::string& text, const std::string& name, const Transf
       if (idx.vertex_index < 0 || size_t(idx.vertex_index) >= nv)
         throw VerityError("", jsonPath,
                           "mesh \"" + name + "\" has a face with a vertex index out of range");
-      hasNormals = hasNormals && idx.normal_index >= 0 && size_t(idx.normal_index) < nn;
-      hasUvs = hasUvs && idx.texcoord_index >= 0 && size_t(idx.texcoord_index) < nt;
+      // A corner without a normal or uv drops them for the whole mesh; a wrong index is an error.
+      if (size_t(idx.normal_index) >= nn && idx.normal_index >= 0)
+        throw VerityError("", jsonPath,
+                          "mesh \"" + name + "\" has a face with a normal index out of range");
+      if (size_t(idx.texcoord_index) >= nt && idx.texcoord_index >= 0)
+        throw VerityError("", jsonPath,
+                          "mesh \"" + name + "\" has a face with a uv index out of range");
+      hasNormals = hasNormals && idx.normal_index >= 0;
+      hasUvs = hasUvs && idx.texcoord_index >= 0;
     }
   }
   for (const auto& shape : reader.GetShapes()) {
