@@ -39,6 +39,14 @@ ImageTexture::ImageTexture(const std::filesystem::path& file, const std::string&
   }
 }
 
+namespace {
+// x − ⌊x⌋, and 0 for a non-finite x.
+float wrapUnit(float x) {
+  const float f = x - std::floor(x);
+  return std::isfinite(f) ? f : 0.0f;
+}
+}  // namespace
+
 Color3 ImageTexture::texel(int x, int y) const {
   x = ((x % width_) + width_) % width_;
   y = ((y % height_) + height_) % height_;
@@ -47,9 +55,10 @@ Color3 ImageTexture::texel(int x, int y) const {
 }
 
 Color3 ImageTexture::eval(const TextureQuery& q) const {
-  // v = 0 is the bottom row of the image.
-  const float x = q.uv.x() * width_ - 0.5f;
-  const float y = (1 - q.uv.y()) * height_ - 0.5f;
+  // The image repeats: uv is wrapped into [0, 1) first, so that any finite uv, however large,
+  // gives texel indices in range. v = 0 is the bottom row of the image.
+  const float x = wrapUnit(q.uv.x()) * width_ - 0.5f;
+  const float y = (1 - wrapUnit(q.uv.y())) * height_ - 0.5f;
   const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
   const float fx = x - x0, fy = y - y0;
   return (1 - fx) * (1 - fy) * texel(x0, y0) + fx * (1 - fy) * texel(x0 + 1, y0) +
