@@ -113,8 +113,10 @@ std::shared_ptr<const Material> MaterialFactory::make(const JsonNode& node) {
   return material;
 }
 
-void MaterialFactory::addNamed(const std::string& name, std::shared_ptr<const Material> material) {
-  named_[name] = std::move(material);
+void MaterialFactory::addNamed(const JsonNode& nameNode, std::shared_ptr<const Material> material) {
+  const std::string name = nameNode.asString();
+  if (!named_.emplace(name, std::move(material)).second)
+    nameNode.fail("a material named \"" + name + "\" is already defined");
 }
 
 std::shared_ptr<const Material> MaterialFactory::reference(const JsonNode& node) {

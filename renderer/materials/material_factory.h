@@ -14,7 +14,8 @@ class MaterialFactory {
  public:
   explicit MaterialFactory(TextureFactory& textures) : textures_(textures) {}
   std::shared_ptr<const Material> make(const JsonNode& node);
-  void addNamed(const std::string& name, std::shared_ptr<const Material> material);
+  // `nameNode` is the "name" member, for the error when the name is already taken.
+  void addNamed(const JsonNode& nameNode, std::shared_ptr<const Material> material);
   // A material's name or an inline material object.
   std::shared_ptr<const Material> reference(const JsonNode& node);
 

@@ -190,7 +190,7 @@ SceneFile build(const JsonNode& root, const std::filesystem::path& file) {
     if (!list->isArray()) list->fail("expected an array of materials");
     for (size_t i = 0; i < list->size(); ++i) {
       const JsonNode m = (*list)[i];
-      const std::string name = m[{"name"}].asString();
+      const JsonNode name = m[{"name"}];
       auto material = materials.make(m);
       materials.addNamed(name, material);
       scene.addMaterial(material);

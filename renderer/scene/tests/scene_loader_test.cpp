@@ -204,6 +204,9 @@ INSTANTIATE_TEST_SUITE_P(
                   "materials[0]: missing required key \"name\""},
         ErrorCase{R"("materials": [{"type": "diffuse light", "name": "l", "emit": 1e39}])",
                   "materials[0].emit"},
+        ErrorCase{
+            R"("materials": [{"type": "lambertian", "name": "m"}, {"type": "lambertian", "name": "m", "albedo": 0.2}])",
+            "materials[1].name: a material named \"m\" is already defined"},
         // Far-away geometry would put ray origins beyond what Embree accepts.
         ErrorCase{
             R"("surfaces": [{"type": "sphere", "material": {"type": "lambertian"}, "transform": {"translate": [1e24, 0, 0]}}])",
