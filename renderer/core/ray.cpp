@@ -1,40 +1,44 @@
 #include "core/ray.h"
 
 #include <bit>
+#include <cstdint>
 
 namespace verity {
 
 namespace {
-constexpr float kOrigin = 1.0f / 32.0f;
-constexpr float kFloatScale = 1.0f / 65536.0f;
-constexpr float kIntScale = 256.0f;
-
-float offsetComponent(float p, float n, float sceneScale) {
-  if (std::fabs(p) < kOrigin * sceneScale) return p + kFloatScale * sceneScale * n;
-  const int of = static_cast<int>(kIntScale * n);
-  const int bits = std::bit_cast<int>(p);
-  return std::bit_cast<float>(bits + ((p < 0) ? -of : of));
+// The next float after v away from zero in the direction of `sign` (std::nextafter without
+// the library call: it is on the path of every spawned ray).
+float stepFloat(float v, float sign) {
+  if (std::isinf(v)) return v;
+  if (v == 0) return std::copysign(std::numeric_limits<float>::denorm_min(), sign);
+  const uint32_t bits = std::bit_cast<uint32_t>(v);
+  const bool awayFromZero = (v >= 0) == (sign > 0);
+  return std::bit_cast<float>(awayFromZero ? bits + 1 : bits - 1);
 }
 }  // namespace
 
-Point3f offsetRayOrigin(const Point3f& p, const Normal3f& n, float sceneScale) {
-  return {offsetComponent(p.x(), n.x(), sceneScale), offsetComponent(p.y(), n.y(), sceneScale),
-          offsetComponent(p.z(), n.z(), sceneScale)};
+Point3f offsetRayOrigin(const Point3f& p, const Vector3f& pError, const Normal3f& n,
+                        const Vector3f& w) {
+  // The distance to the plane through p that bounds the error box along n.
+  const float distance = n.cwiseAbs().dot(pError);
+  const Normal3f side = w.dot(n) < 0 ? Normal3f(-n) : n;
+  Point3f origin = p + distance * side;
+  // The sum is rounded too, and an exact point (no error) still must leave its plane: step
+  // one float further in every component the normal moves.
+  for (int i = 0; i < 3; ++i)
+    if (side[i] != 0) origin[i] = stepFloat(origin[i], side[i]);
+  return origin;
 }
 
-Ray spawnRay(const Point3f& p, const Normal3f& ng, const Vector3f& d, float sceneScale) {
-  const Normal3f side = ng.dot(d) >= 0 ? ng : Normal3f(-ng);
-  return Ray(offsetRayOrigin(p, side, sceneScale), d);
+Ray spawnRay(const Point3f& p, const Vector3f& pError, const Normal3f& ng, const Vector3f& d) {
+  return Ray(offsetRayOrigin(p, pError, ng, d), d);
 }
 
-Ray spawnRayTo(const Point3f& p, const Normal3f& ng, const Point3f& target,
-               const Normal3f& ngTarget, float sceneScale) {
-  const Vector3f toTarget = target - p;
-  const Point3f from = offsetRayOrigin(p, ng.dot(toTarget) >= 0 ? ng : Normal3f(-ng), sceneScale);
-  const Point3f to = offsetRayOrigin(
-      target, ngTarget.dot(toTarget) <= 0 ? ngTarget : Normal3f(-ngTarget), sceneScale);
-  Ray ray(from, to - from, 1.0f - 1e-4f);
-  return ray;
+Ray spawnRayTo(const Point3f& p, const Vector3f& pError, const Normal3f& ng, const Point3f& target,
+               const Vector3f& targetError, const Normal3f& targetNg) {
+  const Point3f from = offsetRayOrigin(p, pError, ng, target - p);
+  const Point3f to = offsetRayOrigin(target, targetError, targetNg, from - target);
+  return Ray(from, to - from, 1.0f - 1e-4f);
 }
 
 }  // namespace verity

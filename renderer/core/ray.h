@@ -1,4 +1,4 @@
-// A ray segment o + t·d for t in [tmin, tmax].
+// A ray segment o + t·d for t in [tmin, tmax], and rays that leave surfaces.
 #pragma once
 
 #include "core/math.h"
@@ -17,20 +17,20 @@ struct Ray {
   Point3f operator()(float t) const { return o + t * d; }
 };
 
-// Moves a ray origin off a surface by a few units in the last place along the geometric
-// normal, so that the new ray does not hit the surface it starts on (Wächter and Binder
-// 2019, "A Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing Gems,
-// chapter 6). Their fixed-point threshold near the origin assumes a scene of unit size;
-// `sceneScale` (the largest coordinate magnitude of the scene) makes it hold at any scale.
-// `n` must point to the side the ray leaves towards.
-Point3f offsetRayOrigin(const Point3f& p, const Normal3f& n, float sceneScale);
+// Moves a ray origin off the surface it lies on, along the geometric normal `n` to the side
+// `w` points to, past the rounding error of the point (`pError`, a bound per component) and
+// then one float further in each moved component, so that the ray cannot hit the surface at
+// its origin (Pharr, Jakob and Humphreys 2016, Physically Based Rendering, 3rd ed., §3.9.5).
+// The offset depends only on the point's own error: a unit sphere keeps small offsets beside
+// a floor a million units wide, and an axis-aligned plane is left only by a float's step.
+Point3f offsetRayOrigin(const Point3f& p, const Vector3f& pError, const Normal3f& n,
+                        const Vector3f& w);
 
-// A ray from p (on a surface with geometric normal ng) in direction d, offset to the side d
-// points to.
-Ray spawnRay(const Point3f& p, const Normal3f& ng, const Vector3f& d, float sceneScale);
+// A ray from p (error bound pError, geometric normal ng) in direction d.
+Ray spawnRay(const Point3f& p, const Vector3f& pError, const Normal3f& ng, const Vector3f& d);
 // A shadow ray between two surface points, each offset to the side facing the other; it
 // ends just before the target so that the target's own surface never occludes it.
-Ray spawnRayTo(const Point3f& p, const Normal3f& ng, const Point3f& target,
-               const Normal3f& ngTarget, float sceneScale);
+Ray spawnRayTo(const Point3f& p, const Vector3f& pError, const Normal3f& ng, const Point3f& target,
+               const Vector3f& targetError, const Normal3f& targetNg);
 
 }  // namespace verity

@@ -35,9 +35,9 @@ Color3 nextEventContribution(const Scene& scene, Sampler& sampler,
     sampled.si.ng = ls->n;
     sampled.si.shading = Frame(ls->n);
     sampled.si.light = static_cast<const AreaLight*>(light);
-    sampled.si.sceneScale = scene.sceneScale();
+    sampled.si.pError = ls->pError;
   }
-  const Ray shadow = ls->atInfinity ? pt.si.spawnRay(ls->wi) : pt.si.spawnRayTo(ls->p, ls->n);
+  const Ray shadow = ls->atInfinity ? pt.si.spawnRay(ls->wi) : pt.si.spawnRayTo(sampled.si);
   ++stats.rays;
   if (scene.occluded(shadow)) return Color3::Zero();
   return contribution;
@@ -59,7 +59,7 @@ Color3 edgeContribution(const Scene& scene, const std::vector<PathVertex>& camer
   const Color3 contribution = pt.beta * fCamera * g * fLight * qs.beta;
   if (isBlack(contribution)) return Color3::Zero();
   ++stats.rays;
-  if (scene.occluded(pt.si.spawnRayTo(qs.p(), qs.si.ng))) return Color3::Zero();
+  if (scene.occluded(pt.si.spawnRayTo(qs.si))) return Color3::Zero();
   return contribution;
 }
 
@@ -86,7 +86,6 @@ Color3 cameraContribution(const Scene& scene, Sampler& sampler,
   sampled = PathVertex();
   sampled.kind = VertexKind::Camera;
   sampled.si.p = cs->lensPoint;
-  sampled.si.sceneScale = scene.sceneScale();
   film = cs->film;
   return contribution;
 }

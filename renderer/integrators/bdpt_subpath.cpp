@@ -95,7 +95,6 @@ void traceCameraSubpath(const Scene& scene, Sampler& sampler, const Ray& ray, in
   PathVertex camera;
   camera.kind = VertexKind::Camera;
   camera.si.p = ray.o;
-  camera.si.sceneScale = scene.sceneScale();
   float pdfPos = 0, pdfDir = 0;
   scene.camera().pdfImportance(ray.o, ray.d, &pdfPos, &pdfDir);
   camera.pdfFwd = pdfPos;
@@ -137,10 +136,10 @@ float traceLightSubpath(const Scene& scene, Sampler& sampler, int maxVertices,
     origin.si.ng = e->n;
     origin.si.shading = Frame(e->n);
     origin.si.light = static_cast<const AreaLight*>(light);
-    origin.si.sceneScale = scene.sceneScale();
+    origin.si.pError = e->pError;
     origin.pdfFwd = pmf * e->pdfPos;
     beta = e->radiance * std::fabs(e->n.dot(e->d)) / (pmf * e->pdfPos * e->pdfDir);
-    ray = spawnRay(e->p, e->n, e->d, scene.sceneScale());
+    ray = origin.si.spawnRay(e->d);
     pdfNext = e->pdfDir;
   }
   origin.beta = Color3::Constant(1.0f / origin.pdfFwd);

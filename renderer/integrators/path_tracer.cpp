@@ -38,7 +38,7 @@ Color3 PathTracer::sampleLight(const Scene& scene, Sampler& sampler, const Surfa
   const TextureQuery q = si.textureQuery();
   const Color3 f = si.material->eval(q, wi, wo, TransportMode::Radiance) * std::fabs(wo.z());
   if (isBlack(f)) return Color3::Zero();
-  const Ray shadow = ls->atInfinity ? si.spawnRay(ls->wi) : si.spawnRayTo(ls->p, ls->n);
+  const Ray shadow = ls->atInfinity ? si.spawnRay(ls->wi) : si.spawnRayTo(ls->p, ls->pError, ls->n);
   ++context.stats.rays;
   if (scene.occluded(shadow)) return Color3::Zero();
   const float lightPdf = pmf * ls->pdf;

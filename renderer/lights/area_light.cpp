@@ -15,6 +15,7 @@ std::optional<LightSample> AreaLight::sampleLi(const Point3f& ref, const Point2f
   ls.wi = d / dist;
   ls.p = s->p;
   ls.n = s->n;
+  ls.pError = s->pError;
   ls.pdf = s->pdf;
   ls.radiance = radiance(s->n, -ls.wi);
   if (isBlack(ls.radiance)) return std::nullopt;
@@ -33,6 +34,7 @@ std::optional<LightEmission> AreaLight::sampleLe(const Point2f& uPos, const Poin
   LightEmission e;
   e.p = s.p;
   e.n = s.n;
+  e.pError = s.pError;
   e.d = Frame(s.n).toWorld(local).normalized();
   e.pdfPos = s.pdf;
   e.pdfDir = warp::squareToCosineHemispherePdf(local);

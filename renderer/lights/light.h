@@ -13,7 +13,8 @@ struct LightSample {
   Vector3f wi = Vector3f::UnitZ();   // unit direction from the reference point to the light
   Point3f p = Point3f::Zero();       // the point on the light (unused at infinity)
   Normal3f n = Normal3f::UnitZ();
-  float pdf = 0;  // per solid angle at the reference point
+  Vector3f pError = Vector3f::Zero();  // bound on p's rounding error
+  float pdf = 0;                       // per solid angle at the reference point
   bool atInfinity = false;
 };
 
@@ -22,12 +23,13 @@ struct LightSample {
 // only, cosine-distributed; the environment emits parallel rays from a disk of the scene's
 // bounding radius, perpendicular to the direction, placed outside the scene.
 struct LightEmission {
-  Point3f p = Point3f::Zero();       // origin
-  Normal3f n = Normal3f::UnitZ();    // emitter normal (the direction of travel at infinity)
-  Vector3f d = Vector3f::UnitZ();    // unit direction of travel
-  Color3 radiance = Color3::Zero();  // Le carried along d
-  float pdfPos = 0;                  // per area: on the shape, or on the disk (environment)
-  float pdfDir = 0;                  // per solid angle
+  Point3f p = Point3f::Zero();         // origin
+  Normal3f n = Normal3f::UnitZ();      // emitter normal (the direction of travel at infinity)
+  Vector3f pError = Vector3f::Zero();  // bound on p's rounding error (on a shape)
+  Vector3f d = Vector3f::UnitZ();      // unit direction of travel
+  Color3 radiance = Color3::Zero();    // Le carried along d
+  float pdfPos = 0;                    // per area: on the shape, or on the disk (environment)
+  float pdfDir = 0;                    // per solid angle
   bool atInfinity = false;
 };
 

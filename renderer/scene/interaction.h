@@ -19,15 +19,19 @@ struct SurfaceInteraction {
   float t = kInfinity;
   const Shape* shape = nullptr;
   const Material* material = nullptr;
-  const AreaLight* light = nullptr;  // set when the surface emits
-  float sceneScale = 1.0f;           // for ray offsets
+  const AreaLight* light = nullptr;    // set when the surface emits
+  Vector3f pError = Vector3f::Zero();  // bound on p's rounding error, per component
 
   TextureQuery textureQuery() const { return {uv, p}; }
   Vector3f toLocal(const Vector3f& v) const { return shading.toLocal(v); }
   Vector3f toWorld(const Vector3f& v) const { return shading.toWorld(v); }
-  Ray spawnRay(const Vector3f& d) const { return verity::spawnRay(p, ng, d, sceneScale); }
-  Ray spawnRayTo(const Point3f& target, const Normal3f& targetNormal) const {
-    return verity::spawnRayTo(p, ng, target, targetNormal, sceneScale);
+  Ray spawnRay(const Vector3f& d) const { return verity::spawnRay(p, pError, ng, d); }
+  Ray spawnRayTo(const Point3f& target, const Vector3f& targetError,
+                 const Normal3f& targetNormal) const {
+    return verity::spawnRayTo(p, pError, ng, target, targetError, targetNormal);
+  }
+  Ray spawnRayTo(const SurfaceInteraction& target) const {
+    return spawnRayTo(target.p, target.pError, target.ng);
   }
 };
 

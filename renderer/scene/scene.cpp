@@ -82,8 +82,6 @@ void Scene::finalize() {
   if (bounds_.empty()) {
     bounds_.expand(Point3f::Zero());
   }
-  sceneScale_ = std::max(bounds_.lo.cwiseAbs().maxCoeff(), bounds_.hi.cwiseAbs().maxCoeff());
-  if (!(sceneScale_ > 0)) sceneScale_ = 1;
   radius_ = std::max(0.5f * (bounds_.hi - bounds_.lo).norm(), 1e-30f);
 
   std::vector<double> powers;
@@ -139,7 +137,6 @@ bool Scene::intersect(const Ray& ray, SurfaceInteraction& si) const {
   si.shape = &shape;
   si.material = shape.material;
   si.light = shape.light;
-  si.sceneScale = sceneScale_;
   shape.completeHit(ray, rh.hit, rh.ray.tfar, si);
   return true;
 }

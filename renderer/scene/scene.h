@@ -66,7 +66,6 @@ class Scene {
 
   const SceneSummary& summary() const { return summary_; }
   const Bounds3f& bounds() const { return bounds_; }
-  float sceneScale() const { return sceneScale_; }
   float boundingRadius() const { return radius_; }
   const std::vector<std::unique_ptr<Shape>>& shapes() const { return shapes_; }
   RTCScene embreeScene() const { return rtcScene_; }
@@ -84,7 +83,7 @@ class Scene {
   Distribution1D lightDistribution_;
   SceneSummary summary_;
   Bounds3f bounds_;
-  float sceneScale_ = 1, radius_ = 1;
+  float radius_ = 1;
   RayLog* rayLog_ = nullptr;
 };
 

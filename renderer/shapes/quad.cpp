@@ -13,6 +13,7 @@ Quad::Quad(const Transform& toWorld, const Vector2f& size) {
   // A mirroring transform keeps the local +z side as the front.
   const Normal3f localFront = toWorld.normal(Normal3f::UnitZ());
   if (localFront.dot(normal_) < 0) normal_ = -normal_;
+  pError_ = pointErrorBound(corner_.cwiseAbs() + edgeU_.cwiseAbs() + edgeV_.cwiseAbs());
 }
 
 unsigned Quad::attach(RTCDevice device, RTCScene scene) const {
@@ -36,6 +37,7 @@ void Quad::completeHit(const Ray&, const RTCHit& hit, float, SurfaceInteraction&
   // For a parallelogram Embree's bilinear (u, v) are the edge coordinates.
   si.uv = Point2f(hit.u, hit.v);
   si.p = corner_ + hit.u * edgeU_ + hit.v * edgeV_;
+  si.pError = pError_;
   si.ng = normal_;
   si.shading.n = normal_;
   si.shading.s = edgeU_.normalized();
@@ -52,7 +54,7 @@ Bounds3f Quad::bounds() const {
 }
 
 ShapeSample Quad::sampleArea(const Point2f& u) const {
-  return {corner_ + u.x() * edgeU_ + u.y() * edgeV_, normal_, 1.0f / area_};
+  return {corner_ + u.x() * edgeU_ + u.y() * edgeV_, normal_, pError_, 1.0f / area_};
 }
 
 }  // namespace verity

@@ -29,6 +29,7 @@ class Quad : public Shape {
   Point3f corner_;  // local (-w/2, -h/2)
   Vector3f edgeU_, edgeV_;
   Normal3f normal_;
+  Vector3f pError_;
   float area_;
 };
 

@@ -12,8 +12,9 @@ namespace verity {
 
 struct ShapeSample {
   Point3f p = Point3f::Zero();
-  Normal3f n = Normal3f::UnitZ();  // geometric normal on the front side
-  float pdf = 0;                   // per area, or per solid angle at the reference point
+  Normal3f n = Normal3f::UnitZ();      // geometric normal on the front side
+  Vector3f pError = Vector3f::Zero();  // bound on p's rounding error, per component
+  float pdf = 0;                       // per area, or per solid angle at the reference point
 };
 
 struct Bounds3f {
@@ -52,6 +53,19 @@ class Shape {
   const Material* material = nullptr;
   const AreaLight* light = nullptr;
 };
+
+// A bound, per component, on the rounding error of a point computed on a primitive from
+// values whose magnitudes sum to `magnitude` (vertices, or a centre and a radius). Our own
+// interpolation is within γ7 of it (Pharr, Jakob and Humphreys 2016, PBRT 3rd ed., §3.9.4).
+// Embree's ray-primitive tests are not conservative and round in proportion to the same
+// magnitudes: with 3 million rays per case, shapes/tests/intersection_scale_test.cpp finds
+// self-intersections at 2 unit roundoffs and none at 3, so γ7 covers them with a margin.
+inline constexpr float kPointErrorUlps = 7;
+inline Vector3f pointErrorBound(const Vector3f& magnitude) {
+  constexpr float kUnitRoundoff = 0x1p-24f;
+  constexpr float factor = kPointErrorUlps * kUnitRoundoff / (1 - kPointErrorUlps * kUnitRoundoff);
+  return factor * magnitude;
+}
 
 // Converts an area density at p (normal n) to a solid-angle density at ref.
 float areaToSolidAngle(float pdfArea, const Point3f& ref, const Point3f& p, const Normal3f& n);

@@ -10,6 +10,7 @@ Sphere::Sphere(const Transform& toWorld, float radius) {
   center_ = toWorld.point(Point3f::Zero());
   radius_ = radius * scale;
   rotation_ = toWorld.matrix().topLeftCorner<3, 3>() / scale;
+  pError_ = pointErrorBound(center_.cwiseAbs() + Vector3f::Constant(radius_));
 }
 
 unsigned Sphere::attach(RTCDevice device, RTCScene scene) const {
@@ -30,6 +31,7 @@ void Sphere::completeHit(const Ray& ray, const RTCHit&, float t, SurfaceInteract
   // Re-project the hit onto the surface: removes the error of o + t·d.
   const Vector3f d = (ray(t) - center_).normalized();
   si.p = center_ + radius_ * d;
+  si.pError = pError_;
   si.ng = d;
   si.shading = Frame(d);
   const Vector3f local = rotation_.transpose() * d;
@@ -47,7 +49,7 @@ Bounds3f Sphere::bounds() const {
 
 ShapeSample Sphere::sampleArea(const Point2f& u) const {
   const Vector3f d = warp::squareToUniformSphere(u);
-  return {center_ + radius_ * d, d, 1.0f / area()};
+  return {center_ + radius_ * d, d, pError_, 1.0f / area()};
 }
 
 // Samples the cone of directions that the sphere subtends (Shirley, Wang and Zimmerman 1996,
@@ -72,7 +74,7 @@ std::optional<ShapeSample> Sphere::sampleSolidAngle(const Point3f& ref, const Po
   const float disc = r2 - (toCenter - b * w).squaredNorm();
   const float s = b - safeSqrt(disc);
   const Vector3f n = (ref + s * w - center_).normalized();
-  ShapeSample sample{center_ + radius_ * n, n, 1.0f / (2 * kPi * oneMinusCos)};
+  ShapeSample sample{center_ + radius_ * n, n, pError_, 1.0f / (2 * kPi * oneMinusCos)};
   if (!std::isfinite(sample.pdf)) return std::nullopt;
   return sample;
 }

@@ -28,6 +28,7 @@ class Sphere : public Shape {
  private:
   Point3f center_;
   float radius_;
+  Vector3f pError_;
   Matrix3f rotation_;  // local axes in world space (columns)
 };
 

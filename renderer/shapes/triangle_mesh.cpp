@@ -28,6 +28,14 @@ unsigned TriangleMesh::attach(RTCDevice device, RTCScene scene) const {
   return id;
 }
 
+// All three vertices bound the error, not the barycentric-weighted ones: near a vertex at the
+// origin, Embree's test still rounds in proportion to the far vertices.
+Vector3f TriangleMesh::pointError(size_t tri) const {
+  return pointErrorBound(data_.positions[data_.indices[3 * tri]].cwiseAbs() +
+                         data_.positions[data_.indices[3 * tri + 1]].cwiseAbs() +
+                         data_.positions[data_.indices[3 * tri + 2]].cwiseAbs());
+}
+
 Normal3f TriangleMesh::faceNormal(size_t tri) const {
   const Point3f& a = data_.positions[data_.indices[3 * tri]];
   const Point3f& b = data_.positions[data_.indices[3 * tri + 1]];
@@ -53,6 +61,7 @@ void TriangleMesh::completeHit(const Ray&, const RTCHit& hit, float, SurfaceInte
   const float b1 = hit.u, b2 = hit.v, b0 = 1 - b1 - b2;
   // Interpolating the vertices keeps the point's error relative to the triangle's size.
   si.p = b0 * data_.positions[i0] + b1 * data_.positions[i1] + b2 * data_.positions[i2];
+  si.pError = pointError(tri);
   si.ng = faceNormal(tri);
   si.uv = data_.uvs.empty() ? Point2f(b1, b2)
                             : Point2f(b0 * data_.uvs[i0] + b1 * data_.uvs[i1] + b2 * data_.uvs[i2]);
@@ -78,7 +87,8 @@ ShapeSample TriangleMesh::sampleArea(const Point2f& u) const {
   const Point3f& a = data_.positions[data_.indices[3 * tri]];
   const Point3f& p1 = data_.positions[data_.indices[3 * tri + 1]];
   const Point3f& p2 = data_.positions[data_.indices[3 * tri + 2]];
-  return {b.x() * a + b.y() * p1 + (1 - b.x() - b.y()) * p2, faceNormal(tri), 1.0f / area()};
+  return {b.x() * a + b.y() * p1 + (1 - b.x() - b.y()) * p2, faceNormal(tri), pointError(tri),
+          1.0f / area()};
 }
 
 }  // namespace verity

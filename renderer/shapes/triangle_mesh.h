@@ -31,6 +31,7 @@ class TriangleMesh : public Shape {
 
  private:
   Normal3f faceNormal(size_t tri) const;
+  Vector3f pointError(size_t tri) const;
 
   MeshData data_;
   Distribution1D areas_;

@@ -167,6 +167,29 @@ def scaled(factor):
                  background=0.2, spp=256, vfov=60)
 
 
+def object_on_floor(floor_size):
+    # Small objects (unit spheres, a triangle, a light) on a floor `floor_size` wide, seen from
+    # above so that the floor fills the view at any size. A floor two million units wide must
+    # not change the image: ray offsets follow each point's own rounding error, not the
+    # scene's extent. What the wider floor adds (light bounced back from far away) is far
+    # below what the comparison can detect.
+    return scene([0, 6, 4], [0, 0.5, 0],
+                 [{"name": "white", "type": "lambertian", "albedo": 0.7},
+                  {"name": "gold", "type": "ggx", "albedo": [1, 0.8, 0.4], "ab": 0.1},
+                  {"name": "glass", "type": "dielectric", "ior": 1.5},
+                  {"name": "light", "type": "diffuse light", "emit": 10}],
+                 [dict(FLOOR, size=floor_size, material="white"),
+                  {"type": "sphere", "radius": 1, "transform": {"translate": [0, 1, 0]},
+                   "material": "gold"},
+                  {"type": "sphere", "radius": 0.4, "transform": {"translate": [1.3, 0.4, 0.9]},
+                   "material": "glass"},
+                  {"type": "triangle", "positions": [[-2.2, 0, 0.8], [-1.2, 0, 1.2], [-1.6, 1.1, 0.2]],
+                   "material": "white"},
+                  {"type": "quad", "size": 1, "transform": [DOWN, {"translate": [0, 2.5, 0]}],
+                   "material": "light"}],
+                 spp=256)
+
+
 SCENES = {
     "light-in-glass": light_in_glass(),
     "coincident-surfaces": coincident_surfaces(),
@@ -177,6 +200,8 @@ SCENES = {
     "scaled-1": scaled(1),
     "scaled-1e-4": scaled(1e-4),
     "scaled-1e5": scaled(1e5),
+    "floor-40": object_on_floor(40),
+    "floor-2e6": object_on_floor(2e6),
 }
 
 if __name__ == "__main__":
