@@ -4,7 +4,9 @@
 
 #include <cctype>
 #include <fstream>
+#include <functional>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -61,6 +63,63 @@ std::optional<std::string> tooDeeplyNested(const nlohmann::json& root) {
   return std::nullopt;
 }
 
+// Records the first key repeated within one object. nlohmann keeps the last value of a
+// repeated key, other readers the first: a scene that says two things must say one.
+class DuplicateKeyFinder {
+ public:
+  bool operator()(int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    using Event = nlohmann::json::parse_event_t;
+    switch (event) {
+      case Event::object_start:
+      case Event::array_start:
+        frames_.push_back({event == Event::object_start, childSegment(), {}, {}, 0});
+        break;
+      case Event::object_end:
+      case Event::array_end:
+        frames_.pop_back();
+        break;
+      case Event::key: {
+        Frame& object = frames_.back();
+        object.key = parsed.get<std::string>();
+        if (!object.keys.insert(object.key).second && !duplicate_) duplicate_ = currentPath();
+        break;
+      }
+      case Event::value:
+        if (!frames_.empty() && !frames_.back().isObject) ++frames_.back().index;
+        break;
+    }
+    return true;
+  }
+  const std::optional<std::string>& duplicate() const { return duplicate_; }
+
+ private:
+  // Each frame keeps only its own step of the path (".key" or "[i]"), so that deep nesting
+  // costs memory in proportion to its depth.
+  struct Frame {
+    bool isObject;
+    std::string segment, key;
+    std::set<std::string> keys;
+    size_t index;
+  };
+  // The step from the current container to a container starting now.
+  std::string childSegment() {
+    if (frames_.empty()) return "";
+    Frame& parent = frames_.back();
+    if (parent.isObject) return "." + parent.key;
+    return fmt::format("[{}]", parent.index++);
+  }
+  // The path of the current key.
+  std::string currentPath() const {
+    std::string path;
+    for (const Frame& f : frames_) path += f.segment;
+    path += "." + frames_.back().key;
+    return path.substr(1);
+  }
+
+  std::vector<Frame> frames_;
+  std::optional<std::string> duplicate_;
+};
+
 }  // namespace
 
 bool Range::contains(float v) const {
@@ -92,9 +151,18 @@ JsonNode JsonNode::load(const std::filesystem::path& file) {
 JsonNode JsonNode::parse(const std::string& text, const std::filesystem::path& file) {
   auto source = std::make_shared<Source>();
   source->file = file;
+  // nlohmann's reader takes a NUL byte for the end of the input and ignores what follows.
+  if (const size_t nul = text.find('\0'); nul != std::string::npos) {
+    const auto [line, column] = lineColumn(text, nul);
+    throw VerityError(file.string(), "",
+                      fmt::format("JSON syntax error at line {}, column {}: a NUL byte (JSON "
+                                  "text cannot contain one; is this a binary file?)",
+                                  line, column));
+  }
   std::shared_ptr<nlohmann::json> root;
+  DuplicateKeyFinder duplicates;
   try {
-    root = std::make_shared<nlohmann::json>(nlohmann::json::parse(text));
+    root = std::make_shared<nlohmann::json>(nlohmann::json::parse(text, std::ref(duplicates)));
   } catch (const nlohmann::json::parse_error& e) {
     // e.byte is one past the offending character.
     const auto [line, column] = lineColumn(text, e.byte > 0 ? e.byte - 1 : 0);
@@ -117,6 +185,9 @@ JsonNode JsonNode::parse(const std::string& text, const std::filesystem::path& f
   if (const auto path = tooDeeplyNested(*root))
     throw VerityError(file.string(), *path,
                       fmt::format("nested deeper than {} levels", kMaxNesting));
+  if (duplicates.duplicate())
+    throw VerityError(file.string(), *duplicates.duplicate(),
+                      "the key appears twice in one object; keep one");
   return JsonNode(root, root.get(), "", source);
 }
 

@@ -38,6 +38,9 @@ CASES = {
     "syntax-nan-literal": ('{"camera": {"vfov": NaN}}\n', "column"),
     "syntax-number-overflow": ('{"camera": {"vfov": 1e999}}\n', "number overflow"),
     "not-an-object": ("[1, 2, 3]\n", "must be a JSON object"),
+    "syntax-nul-byte": ('{"camera": {"vfov": 40}}\n\0{"garbage"\n', "line 2, column 1: a NUL byte"),
+    "duplicate-key": ('{"camera": {"vfov": 40, "resolution": [8, 8], "vfov": 50}}\n', "camera.vfov: the key appears twice"),
+    "duplicate-key-in-array": ('{"camera": {"resolution": [8, 8]}, "surfaces": [{"type": "sphere"}, {"type": "sphere", "radius": 1, "radius": 2}]}\n', "surfaces[1].radius: the key appears twice"),
     # Top level.
     "missing-camera": ({"surfaces": []}, 'missing required key "camera"'),
     "unknown-top-key": (scene(lights=[]), "lights: unknown key"),
@@ -86,6 +89,10 @@ CASES = {
     "mesh-broken-obj": (scene(surfaces=[{"type": "mesh", "filename": "broken.obj", "material": LAMB}]), "surfaces[0].filename"),
     "mesh-empty-obj": (scene(surfaces=[{"type": "mesh", "filename": "empty.obj", "material": LAMB}]), "surfaces[0].filename"),
     "mesh-overflow-vertex": (scene(surfaces=[{"type": "mesh", "filename": "overflow-vertex.obj", "material": LAMB}]), "surfaces[0].filename"),
+    "mesh-nan-vertex": (scene(surfaces=[{"type": "mesh", "filename": "nan-vertex.obj", "material": LAMB}]), 'line 2: "nan" is not a finite number'),
+    "mesh-unparsable-vertex": (scene(surfaces=[{"type": "mesh", "filename": "unparsable-vertex.obj", "material": LAMB}]), 'line 2: "abc" is not a finite number'),
+    "mesh-short-vertex": (scene(surfaces=[{"type": "mesh", "filename": "short-vertex.obj", "material": LAMB}]), 'line 2: "v" with 2 numbers'),
+    "mesh-normal-index-out-of-range": (scene(surfaces=[{"type": "mesh", "filename": "normal-index-out-of-range.obj", "material": LAMB}]), "normal index out of range"),
     "triangle-two-points": (scene(surfaces=[{"type": "triangle", "positions": [[0, 0, 0], [1, 0, 0]], "material": LAMB}]), "surfaces[0].positions"),
     "triangle-zero-normal": (scene(surfaces=[{"type": "triangle", "positions": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "normals": [[0, 0, 1], [0, 0, 0], [0, 0, 1]], "material": LAMB}]), "surfaces[0].normals[1]"),
     "group-without-children": (scene(surfaces=[{"type": "group"}]), 'surfaces[0]: missing required key "children"'),
@@ -123,6 +130,11 @@ def main():
     (OUT / "broken.obj").write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n")
     (OUT / "empty.obj").write_text("# a mesh with no faces\nv 0 0 0\n")
     (OUT / "overflow-vertex.obj").write_text("v 0 0 0\nv 1e39 0 0\nv 0 1 0\nf 1 2 3\n")
+    (OUT / "nan-vertex.obj").write_text("v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n")
+    (OUT / "unparsable-vertex.obj").write_text("v 0 0 0\nv abc 0 0\nv 0 1 0\nf 1 2 3\n")
+    (OUT / "short-vertex.obj").write_text("v 0 0 0\nv 1 2\nv 0 1 0\nf 1 2 3\n")
+    (OUT / "normal-index-out-of-range.obj").write_text(
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//7\n")
     (OUT / "corrupt.png").write_bytes(b"\x89PNG\r\n\x1a\nnot really a png")
     lines = []
     for name, (content, expected) in sorted(CASES.items()):

@@ -216,7 +216,11 @@ INSTANTIATE_TEST_SUITE_P(
             "surfaces[0].children[0]: lies outside the supported extent"},
         ErrorCase{
             R"("surfaces": [{"type": "quad", "material": {"type": "lambertian"}, "transform": {"matrix": [1,0,0,0, 0,1,0,0, 0,0,1,1, 1,0,0,1]}}])",
-            "surfaces[0].transform.matrix: the last row must be [0, 0, 0, 1]"}));
+            "surfaces[0].transform.matrix: the last row must be [0, 0, 0, 1]"},
+        // A repeated key is named by its path, past arrays of values and of arrays.
+        ErrorCase{
+            R"("surfaces": [{"type": "sphere", "material": {"type": "lambertian"}}, {"type": "triangle", "positions": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "material": {"type": "lambertian", "albedo": 0.5, "albedo": 0.2}}])",
+            "surfaces[1].material.albedo: the key appears twice in one object"}));
 
 // Builds a value nested `depth` levels deep: groups, blends or textures recurse once per level.
 std::string nestedGroups(int depth) {
