@@ -5,10 +5,11 @@ namespace verity {
 namespace {
 Matrix4f lookAt(const Vector3f& from, const Vector3f& at, const Vector3f& up,
                 const JsonNode& node) {
+  // Stable norms: a far-away camera must reach the extent check, not overflow to a zero axis.
   const Vector3f dir = at - from;
-  if (!(dir.norm() > 0)) node.fail("\"from\" and \"at\" are the same point");
-  const Vector3f z = -dir.normalized();  // the camera looks down −z
-  const Vector3f xRaw = up.cross(z);
+  if (!(dir.stableNorm() > 0)) node.fail("\"from\" and \"at\" are the same point");
+  const Vector3f z = -dir.stableNormalized();  // the camera looks down −z
+  const Vector3f xRaw = up.stableNormalized().cross(z);
   if (!(xRaw.norm() > 1e-12f)) node.fail("\"up\" is parallel to the viewing direction");
   const Vector3f x = xRaw.normalized();
   const Vector3f y = z.cross(x);

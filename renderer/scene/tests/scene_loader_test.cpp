@@ -272,6 +272,12 @@ TEST(SceneLoaderErrors, CameraValues) {
             std::string::npos);
   EXPECT_NE(cam(R"("transform": {"from": [0,0,0], "at": [0,0,0]})").find("camera.transform"),
             std::string::npos);
+  EXPECT_NE(cam(R"("transform": {"from": [1e20, 0, 0], "at": [0, 0, 0]})")
+                .find("camera.transform: lies outside the supported extent"),
+            std::string::npos);
+  EXPECT_NE(cam(R"("transform": {"from": [0, 0, 5], "at": [0, 0, 0], "up": [0, 1e-30, 1]})")
+                .find("\"up\" is parallel"),
+            std::string::npos);
   EXPECT_NE(loadError("{}").find("missing required key \"camera\""), std::string::npos);
   EXPECT_NE(loadError("[1, 2]").find("must be a JSON object"), std::string::npos);
 }
