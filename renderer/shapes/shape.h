@@ -60,10 +60,11 @@ class Shape {
 // Embree's ray-primitive tests are not conservative and round in proportion to the same
 // magnitudes: with 3 million rays per case, shapes/tests/intersection_scale_test.cpp finds
 // self-intersections at 2 unit roundoffs and none at 3, so γ7 covers them with a margin.
-inline constexpr float kPointErrorUlps = 7;
+inline constexpr float kPointErrorRoundoffs = 7;
 inline Vector3f pointErrorBound(const Vector3f& magnitude) {
   constexpr float kUnitRoundoff = 0x1p-24f;
-  constexpr float factor = kPointErrorUlps * kUnitRoundoff / (1 - kPointErrorUlps * kUnitRoundoff);
+  constexpr float factor =
+      kPointErrorRoundoffs * kUnitRoundoff / (1 - kPointErrorRoundoffs * kUnitRoundoff);
   return factor * magnitude;
 }
 

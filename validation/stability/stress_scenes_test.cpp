@@ -71,6 +71,10 @@ std::string caseName(const ::testing::TestParamInfo<Case>& info) {
   return name;
 }
 
+std::string integratorName(const ::testing::TestParamInfo<std::string>& info) {
+  return info.param;
+}
+
 class StressScene : public ::testing::TestWithParam<Case> {};
 
 // Every sample finite: the film counts NaN and Inf samples (and leaves them out).
@@ -151,10 +155,7 @@ TEST(ScaledScenePower, DetectsATenPercentBrighterLight) {
               options.alpha);
 }
 
-INSTANTIATE_TEST_SUITE_P(Stability, ScaledScene, ::testing::ValuesIn(kIntegrators),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           return info.param;
-                         });
+INSTANTIATE_TEST_SUITE_P(Stability, ScaledScene, ::testing::ValuesIn(kIntegrators), integratorName);
 
 // Small objects keep their own precision beside a huge one: the floor 2e6 wide renders what
 // the floor 40 wide renders (the camera sees no floor beyond 20). A family of its own: one
@@ -185,10 +186,7 @@ TEST_P(HugeFloor, AgreesWithSmallFloor) {
               integrator.c_str(), result.smallestP, result.detectableBias);
 }
 
-INSTANTIATE_TEST_SUITE_P(Stability, HugeFloor, ::testing::ValuesIn(kIntegrators),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           return info.param;
-                         });
+INSTANTIATE_TEST_SUITE_P(Stability, HugeFloor, ::testing::ValuesIn(kIntegrators), integratorName);
 
 }  // namespace
 }  // namespace verity::validation
