@@ -22,7 +22,8 @@ struct Ray {
 // then one float further in each moved component, so that the ray cannot hit the surface at
 // its origin (Pharr, Jakob and Humphreys 2016, Physically Based Rendering, 3rd ed., §3.9.5).
 // The offset depends only on the point's own error: a unit sphere keeps small offsets beside
-// a floor a million units wide, and an axis-aligned plane is left only by a float's step.
+// a floor a million units wide, and an axis-aligned plane at 0 is left by 2^-96 (kMinOffset in
+// ray.cpp), the least distance at which Embree's hit distance does not underflow to zero.
 Point3f offsetRayOrigin(const Point3f& p, const Vector3f& pError, const Normal3f& n,
                         const Vector3f& w);
 

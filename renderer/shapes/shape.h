@@ -59,7 +59,11 @@ class Shape {
 // interpolation is within γ7 of it (Pharr, Jakob and Humphreys 2016, PBRT 3rd ed., §3.9.4).
 // Embree's ray-primitive tests are not conservative and round in proportion to the same
 // magnitudes: with 3 million rays per case, shapes/tests/intersection_scale_test.cpp finds
-// self-intersections at 2 unit roundoffs and none at 3, so γ7 covers them with a margin.
+// self-intersections at 2 unit roundoffs and none at 3, so γ7 covers them with a margin;
+// shapes/tests/ray_offset_families_test.cpp checks it with 10^7 rays per family of placements
+// (planes through the origin, random rotations and translations, scales 1e-4 to 1e5). A
+// component that is exactly zero (a floor at y = 0) has a zero bound: the floor under
+// Embree's arithmetic there is kMinOffset (core/ray.cpp).
 inline constexpr float kPointErrorRoundoffs = 7;
 inline Vector3f pointErrorBound(const Vector3f& magnitude) {
   constexpr float kUnitRoundoff = 0x1p-24f;
