@@ -1,19 +1,21 @@
 // Alternates two textures in a solid 3D checkerboard of cells of size 1/scale.
 #pragma once
 
+#include "textures/solid_mapping.h"
 #include "textures/texture.h"
 
 namespace verity {
 
 class CheckerTexture : public Texture {
  public:
-  CheckerTexture(TexturedColor even, TexturedColor odd, float scale)
-      : even_(std::move(even)), odd_(std::move(odd)), scale_(scale) {}
+  CheckerTexture(TexturedColor even, TexturedColor odd, float scale, SolidMapping mapping = {})
+      : even_(std::move(even)), odd_(std::move(odd)), scale_(scale), mapping_(mapping) {}
   Color3 eval(const TextureQuery& q) const override;
 
  private:
   TexturedColor even_, odd_;
   float scale_;
+  SolidMapping mapping_;
 };
 
 }  // namespace verity

@@ -2,19 +2,21 @@
 // Synthesizer"), blending a base colour into a vein colour.
 #pragma once
 
+#include "textures/solid_mapping.h"
 #include "textures/texture.h"
 
 namespace verity {
 
 class MarbleTexture : public Texture {
  public:
-  MarbleTexture(TexturedColor veins, TexturedColor base, float scale)
-      : veins_(std::move(veins)), base_(std::move(base)), scale_(scale) {}
+  MarbleTexture(TexturedColor veins, TexturedColor base, float scale, SolidMapping mapping = {})
+      : veins_(std::move(veins)), base_(std::move(base)), scale_(scale), mapping_(mapping) {}
   Color3 eval(const TextureQuery& q) const override;
 
  private:
   TexturedColor veins_, base_;
   float scale_;
+  SolidMapping mapping_;
 };
 
 }  // namespace verity

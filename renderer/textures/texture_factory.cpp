@@ -1,10 +1,18 @@
 #include "textures/texture_factory.h"
 
+#include "scene/transform_parser.h"
 #include "textures/checker.h"
 #include "textures/image_texture.h"
 #include "textures/marble.h"
 
 namespace verity {
+
+namespace {
+// A solid texture's optional `transform`: its frame in the world.
+SolidMapping parseMapping(const JsonNode& node) {
+  return node.has({"transform"}) ? SolidMapping(parseOptionalTransform(node)) : SolidMapping();
+}
+}  // namespace
 
 TexturedColor TextureFactory::parse(const JsonNode& node) {
   if (node.isNumber() || node.isArray()) {
@@ -21,12 +29,12 @@ TexturedColor TextureFactory::parse(const JsonNode& node) {
     TexturedColor even = parse(node, {"even"}, Color3::Ones());
     TexturedColor odd = parse(node, {"odd"}, Color3::Zero());
     const float scale = node.getFloat({"scale"}, 1.0f, Range::positive());
-    result = TexturedColor(std::make_shared<CheckerTexture>(even, odd, scale));
+    result = TexturedColor(std::make_shared<CheckerTexture>(even, odd, scale, parseMapping(node)));
   } else if (type == "marble") {
     TexturedColor veins = parse(node, {"veins"}, Color3::Constant(0.1f));
     TexturedColor base = parse(node, {"base"}, Color3::Constant(0.9f));
     const float scale = node.getFloat({"scale"}, 1.0f, Range::positive());
-    result = TexturedColor(std::make_shared<MarbleTexture>(veins, base, scale));
+    result = TexturedColor(std::make_shared<MarbleTexture>(veins, base, scale, parseMapping(node)));
   } else if (type == "image") {
     const JsonNode fileNode = node[{"filename"}];
     const std::string path = node.resolve(fileNode.asString()).string();

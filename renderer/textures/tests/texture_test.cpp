@@ -31,6 +31,25 @@ TEST(CheckerTexture, CoordinatesBeyondIntegersGiveOneOfItsColours) {
   }
 }
 
+// A solid texture's transform places its frame in the world: the pattern moves with it.
+TEST(CheckerTexture, ATransformMovesThePattern) {
+  const Color3 black = Color3::Zero(), white = Color3::Ones();
+  Matrix4f toWorld = Matrix4f::Identity();
+  toWorld.topLeftCorner<3, 3>() << 0, -1, 0, 1, 0, 0, 0, 0, 1;  // 90° about z
+  toWorld.topRightCorner<3, 1>() = Vector3f(10.5f, 0, 0);
+  const CheckerTexture plain(TexturedColor(black), TexturedColor(white), 2.0f);
+  const CheckerTexture moved(TexturedColor(black), TexturedColor(white), 2.0f,
+                             SolidMapping(Transform(toWorld)));
+  for (const Point3f& p :
+       {Point3f(0.1f, 0.2f, 0.3f), Point3f(0.6f, -0.7f, 0.1f), Point3f(-1.3f, 0.35f, 2.2f)}) {
+    const Point3f world = toWorld.topLeftCorner<3, 3>() * p + toWorld.topRightCorner<3, 1>();
+    EXPECT_EQ(moved.eval(at(world)).x(), plain.eval(at(p)).x()) << p.transpose();
+  }
+  // Half a cell along x in the world is a move along y of the texture's frame.
+  EXPECT_NE(moved.eval(at(Point3f(10.6f, 0.1f, 0.1f))).x(),
+            moved.eval(at(Point3f(10.6f, 0.6f, 0.1f))).x());
+}
+
 TEST(ImageTexture, RepeatsForAnyFiniteUvAndStaysFiniteOtherwise) {
   const ImageTexture image(VERITY_SOURCE_DIR "/scenes/textures/tiles.png", "filename");
   const Point2f uv(0.3f, 0.7f);

@@ -1,0 +1,25 @@
+// Where a solid (world-space) texture sits: its own frame, placed in the world by the
+// texture's optional `transform` like a surface's, so that a pattern can move with the
+// object it is on (pbrt's TextureMapping3D). Without a transform it costs nothing.
+#pragma once
+
+#include <optional>
+
+#include "core/transform.h"
+
+namespace verity {
+
+class SolidMapping {
+ public:
+  SolidMapping() = default;
+  explicit SolidMapping(const Transform& toWorld) : toTexture_(toWorld.inverse()) {}
+
+  Point3f operator()(const Point3f& world) const {
+    return toTexture_ ? toTexture_->point(world) : world;
+  }
+
+ private:
+  std::optional<Transform> toTexture_;
+};
+
+}  // namespace verity
