@@ -19,16 +19,34 @@ BatchRegions::BatchRegions(std::vector<int> regionOf, int regions, std::string l
 }
 
 void BatchRegions::addBatch(const Film& film) {
-  if (size_t(film.width()) * film.height() != regionOf_.size())
+  addBatch(film.width(), film.height(), [&](int x, int y) { return film.mean(x, y); });
+}
+
+void BatchRegions::addBatch(const ImageChannels& image) {
+  const std::vector<float>* planes[kChannels];
+  for (int c = 0; c < kChannels; ++c) {
+    const auto plane = image.planes.find(kChannelNames[c]);
+    if (plane == image.planes.end())
+      throw VerityError(label_, "", fmt::format("a batch without channel {}", kChannelNames[c]));
+    planes[c] = &plane->second;
+  }
+  addBatch(image.width, image.height, [&](int x, int y) {
+    const size_t i = size_t(y) * image.width + x;
+    return Color3((*planes[0])[i], (*planes[1])[i], (*planes[2])[i]);
+  });
+}
+
+void BatchRegions::addBatch(int width, int height, const std::function<Color3(int, int)>& mean) {
+  if (size_t(width) * height != regionOf_.size())
     throw VerityError(label_, "",
-                      fmt::format("a batch of {}x{} pixels for a region map of {} pixels",
-                                  film.width(), film.height(), regionOf_.size()));
+                      fmt::format("a batch of {}x{} pixels for a region map of {} pixels", width,
+                                  height, regionOf_.size()));
   std::vector<std::array<double, kChannels>> batch(pixels_.size(), {0, 0, 0});
-  for (int y = 0; y < film.height(); ++y)
-    for (int x = 0; x < film.width(); ++x) {
-      const int r = regionOf_[size_t(y) * film.width() + x];
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const int r = regionOf_[size_t(y) * width + x];
       if (r < 0) continue;
-      const Color3 m = film.mean(x, y);
+      const Color3 m = mean(x, y);
       for (int c = 0; c < kChannels; ++c) batch[r][c] += m[c];
     }
   for (size_t r = 0; r < pixels_.size(); ++r)

@@ -14,10 +14,12 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "film/film.h"
+#include "film/image_io.h"
 #include "validation/pixel_statistics.h"
 
 namespace verity::validation {
@@ -31,6 +33,8 @@ class BatchRegions {
   // Adds one batch: a film of the image's resolution, rendered with its own seed. Throws
   // VerityError when the resolution differs.
   void addBatch(const Film& film);
+  // The same for an image's R, G and B (another renderer's, read from an EXR).
+  void addBatch(const ImageChannels& image);
 
   int batches() const { return batches_; }
   // Requires at least two batches. Regions with no pixel get 0 samples (compareImages leaves
@@ -38,6 +42,8 @@ class BatchRegions {
   PixelStatistics statistics() const;
 
  private:
+  void addBatch(int width, int height, const std::function<Color3(int, int)>& mean);
+
   std::vector<int> regionOf_;
   std::vector<int> pixels_;  // per region
   std::string label_;

@@ -105,13 +105,13 @@ class SurfaceParser {
       const JsonNode file = node[{"filename"}];
       try {
         shape = std::make_unique<TriangleMesh>(
-            loadObj(node.resolve(file.asString()), toWorld, file.path()));
+            keepFront(loadObj(node.resolve(file.asString()), toWorld, file.path()), toWorld));
       } catch (const VerityError& e) {
         if (!e.file().empty()) throw;
         throw VerityError(node.file().string(), e.jsonPath(), e.problem());
       }
     } else if (type == "triangle") {
-      shape = std::make_unique<TriangleMesh>(parseTriangle(node, toWorld));
+      shape = std::make_unique<TriangleMesh>(keepFront(parseTriangle(node, toWorld), toWorld));
     } else {
       node[{"type"}].fail("unknown surface type \"" + type +
                           "\" (expected sphere, quad, mesh, triangle or group)");
@@ -124,6 +124,16 @@ class SurfaceParser {
   }
 
  private:
+  // A triangle's front side is the side its winding turns counter-clockwise around; a
+  // mirroring transform reverses the winding, so it is reversed back to keep the front on the
+  // same side of the surface (as quads do; pbrt flips such normals too).
+  static MeshData keepFront(MeshData mesh, const Transform& toWorld) {
+    if (toWorld.flipsHandedness())
+      for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3)
+        std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
+    return mesh;
+  }
+
   static MeshData parseTriangle(const JsonNode& node, const Transform& toWorld) {
     MeshData mesh;
     const JsonNode positions = node[{"positions"}];

@@ -190,6 +190,30 @@ def object_on_floor(floor_size):
                  spp=256)
 
 
+def on_planes():
+    # A corner of a room with its floor in y = 0 and its walls in x = 0 (two triangles) and
+    # z = 0 (a quad), all facing into the corner: a surface whose points have a coordinate exactly 0 has no rounding error
+    # in it, and a ray leaving it one denormal off the plane found the plane again at t = 0
+    # (next-event estimation 21% dark). The light hangs inside the corner.
+    wall_x = [[0, 0, 0], [0, 0, 4], [0, 4, 4], [0, 4, 0]]
+    return scene([5, 3.2, 5.5], [1.2, 1, 1.2],
+                 [{"name": "white", "type": "lambertian", "albedo": 0.7},
+                  {"name": "red", "type": "lambertian", "albedo": [0.7, 0.1, 0.1]},
+                  {"name": "light", "type": "diffuse light", "emit": 20}],
+                 [{"type": "quad", "size": 4, "material": "white",
+                   "transform": [{"axis": [1, 0, 0], "angle": -90}, {"translate": [2, 0, 2]}]},
+                  {"type": "quad", "size": 4, "material": "white",
+                   "transform": {"translate": [2, 2, 0]}},
+                  {"type": "triangle", "positions": [wall_x[0], wall_x[2], wall_x[1]],
+                   "material": "red"},
+                  {"type": "triangle", "positions": [wall_x[0], wall_x[3], wall_x[2]],
+                   "material": "red"},
+                  {"type": "sphere", "radius": 0.5, "transform": {"translate": [1.5, 0.5, 1.2]},
+                   "material": "white"},
+                  {"type": "quad", "size": 0.8, "transform": [DOWN, {"translate": [1.4, 2.6, 1.4]}],
+                   "material": "light"}])
+
+
 SCENES = {
     "light-in-glass": light_in_glass(),
     "coincident-surfaces": coincident_surfaces(),
@@ -202,6 +226,7 @@ SCENES = {
     "scaled-1e5": scaled(1e5),
     "floor-40": object_on_floor(40),
     "floor-2e6": object_on_floor(2e6),
+    "on-planes": on_planes(),
 }
 
 if __name__ == "__main__":

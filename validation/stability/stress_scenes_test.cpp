@@ -96,7 +96,7 @@ INSTANTIATE_TEST_SUITE_P(
     Stability, StressScene,
     ::testing::Combine(::testing::Values("light-in-glass", "coincident-surfaces",
                                          "degenerate-triangles", "tilted-normals", "camera-inside",
-                                         "light-facing-away", "floor-2e6"),
+                                         "light-facing-away", "floor-2e6", "on-planes"),
                        ::testing::ValuesIn(kIntegrators)),
     caseName);
 

@@ -10,6 +10,7 @@
 #include <ctime>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -18,8 +19,7 @@
 
 namespace verity::studies {
 
-SceneFile loadStudyScene(const std::filesystem::path& file, int width) {
-  if (width <= 0) return loadScene(file);
+std::optional<nlohmann::json> sceneJsonAtWidth(const std::filesystem::path& file, int width) {
   std::ifstream in(file);
   if (!in) throw VerityError(file.string(), "", "cannot open the scene file");
   std::stringstream text;
@@ -28,7 +28,7 @@ SceneFile loadStudyScene(const std::filesystem::path& file, int width) {
   try {
     scene = nlohmann::json::parse(text.str());
   } catch (const nlohmann::json::exception&) {
-    return loadScene(file);  // let the loader report the problem in its own words
+    return std::nullopt;
   }
   nlohmann::json& camera = scene["camera"];
   int w = 512, h = 512;  // the scene format's default resolution
@@ -39,7 +39,14 @@ SceneFile loadStudyScene(const std::filesystem::path& file, int width) {
   }
   const int height = std::max(1, int(std::lround(double(width) * h / std::max(w, 1))));
   camera["resolution"] = {width, height};
-  return loadSceneText(scene.dump(), file);
+  return scene;
+}
+
+SceneFile loadStudyScene(const std::filesystem::path& file, int width) {
+  if (width <= 0) return loadScene(file);
+  const std::optional<nlohmann::json> scene = sceneJsonAtWidth(file, width);
+  // A file that is not JSON: let the loader report the problem in its own words.
+  return scene ? loadSceneText(scene->dump(), file) : loadScene(file);
 }
 
 IntegratorSettings studyIntegrator(const SceneFile& file, const std::string& type, int maxBounces) {

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -25,6 +26,9 @@ inline constexpr double kRelEpsilon = 1e-2;
 // Loads `file`; with width > 0 the camera renders width × (width · h / w) pixels (the
 // scene's aspect ratio kept) by rewriting the camera's resolution before the scene is built.
 SceneFile loadStudyScene(const std::filesystem::path& file, int width);
+// The scene's JSON with the camera's resolution rewritten that way, or nullopt when the file
+// is not JSON; throws VerityError when it cannot be read.
+std::optional<nlohmann::json> sceneJsonAtWidth(const std::filesystem::path& file, int width);
 // The integrator settings of `file` with the type (any accepted spelling) and max bounces
 // (if ≥ 0) overridden; throws VerityError for an unknown type.
 IntegratorSettings studyIntegrator(const SceneFile& file, const std::string& type, int maxBounces);

@@ -1,6 +1,7 @@
 // Every key and spelling of the scene format, and every class of error the loader reports.
 #include "scene/scene_loader.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -66,6 +67,24 @@ TEST(SceneLoader, IntegratorSpellings) {
                             "/tmp/a.json")
                   .integrator.type,
               type);
+}
+
+// A mirror image of a triangle (no vertex normals) keeps its front on the mirrored side: the
+// same side as a quad's, whose front a mirroring transform keeps too.
+TEST(SceneLoader, AMirroringTransformKeepsATrianglesFront) {
+  for (const char* transform :
+       {R"({"scale": [1, 1, 1]})", R"({"scale": [-1, 1, 1]})", R"({"scale": [1, 1, -1]})"}) {
+    SceneFile f = loadSceneText(sceneWith(fmt::format(R"("surfaces": [
+          {{"type": "triangle", "positions": [[-1,-1,0],[1,-1,0],[0,1,0]], "material": {{"type": "lambertian"}}, "transform": {0}}},
+          {{"type": "quad", "size": 2, "material": {{"type": "lambertian"}}, "transform": [{0}, {{"translate": [0, 0, -3]}}]}}])",
+                                                      transform)),
+                                "/tmp/a.json");
+    SurfaceInteraction triangle, quad;
+    const Ray ray(Point3f(0.1f, -0.2f, 5), Vector3f(0, 0, -1));
+    ASSERT_TRUE(f.scene->intersect(ray, triangle)) << transform;
+    ASSERT_TRUE(f.scene->intersect(Ray(triangle.p + Vector3f(0, 0, -1e-3f), ray.d), quad));
+    EXPECT_GT(triangle.ng.dot(quad.ng), 0.99f) << transform;
+  }
 }
 
 TEST(SceneLoader, SurfacesMaterialsAndBackgrounds) {

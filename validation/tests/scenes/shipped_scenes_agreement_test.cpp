@@ -1,11 +1,15 @@
-// BDPT and the light tracer against the path tracer with next-event estimation on the
-// shipped scenes (issue 5): every scene at 32 pixels wide, max_bounces 5.
+// Every unbiased integrator against every other, on every shipped and stress scene (issues 5
+// and 17): path_tracer_mats, path_tracer_nee, path_tracer_mis and bdpt pairwise, and the light
+// tracer against each of them. No integrator is the reference: a bug two of them share (the
+// shadow rays of next-event estimation, say) still shows against the ones that do not share
+// it, path_tracer_mats above all, which traces no shadow ray. Every scene at 32 pixels wide,
+// max_bounces 5.
 //
-//   - Images. Per 16×16 tile and channel, a Welch t-test of BDPT's mean against the path
-//     tracer's, and of the light tracer's against it. The light tracer sees neither delta
-//     surfaces nor an emitting background directly (light_tracer.h), so its tiles pool only
-//     the pixels that see neither, here or in a neighbour. One Holm correction (holm.h) over
-//     every test of every tile, scene and integrator: family-wise level 1%.
+//   - Images. Per 16×16 tile and channel, a Welch t-test of one integrator's mean against the
+//     other's. The light tracer sees neither delta surfaces nor an emitting background directly
+//     (light_tracer.h), so its comparisons pool only the pixels that see neither, here or in a
+//     neighbour. One Holm correction (holm.h) over every test of every tile, scene and pair:
+//     family-wise level 1%.
 //   - Path lengths (cornell-box). For each k = 0 … 5, BDPT's weighted strategies of length k
 //     summed against the path tracer's length-k image, per tile and channel; its own Holm
 //     family at 1%.
@@ -16,17 +20,16 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <optional>
 
 #include "integrators/integrator_settings.h"
 #include "render/component_images.h"
 #include "render/renderer.h"
 #include "validation/batch_regions.h"
-#include "validation/comparison_report.h"
-#include "validation/holm.h"
-#include "validation/image_comparison.h"
-#include "validation/power.h"
+#include "validation/comparison_family.h"
 #include "validation/studies/study_util.h"
 
 namespace verity::validation {
@@ -38,17 +41,27 @@ constexpr int kMaxBounces = 5;
 constexpr int kBatches = 20;
 constexpr double kFamilyWiseLevel = 0.01;
 
-const char* const kScenes[] = {"cornell-box", "cornell-box-glass", "glossy-cornell-box",
-                               "veach-mats",  "rough-glass",       "textured-box"};
-const char* const kIntegrators[] = {"path_tracer_nee", "bdpt", "light_tracer"};
-enum { kPathTracer = 0, kBdpt = 1, kLightTracer = 2 };
-// Samples per pixel of a batch. The path tracer finds caustics (light through the glass or
+const char* const kIntegrators[] = {"path_tracer_mats", "path_tracer_nee", "path_tracer_mis",
+                                    "bdpt", "light_tracer"};
+enum { kMaterials = 0, kNee = 1, kMis = 2, kBdpt = 3, kLightTracer = 4, kCount = 5 };
+// Samples per pixel of a batch. The path tracers find caustics (light through the glass or
 // off the mirror onto a diffuse surface) only when a sampled direction happens to hit the
 // emitter: rare, large values. A t-test needs each batch mean to be nearly normal, which
 // takes many such hits per batch; at 16 spp and 8×8 tiles the cornell-box-glass tiles lit
-// by the mirror's caustic rejected at p ≈ 1e-5 and agreed at 256 spp. The path tracer is the
-// cheapest of the three, so it gets four times the samples.
-constexpr int kBatchSpp[] = {64, 16, 16};
+// by the mirror's caustic rejected at p ≈ 1e-5 and agreed at 256 spp. The path tracers are
+// the cheapest, so they get four times the samples.
+constexpr int kBatchSpp[] = {64, 64, 64, 16, 16};
+
+// Every shipped and stress scene.
+std::vector<std::filesystem::path> allScenes() {
+  std::vector<std::filesystem::path> scenes;
+  const std::filesystem::path root(VERITY_SCENES_DIR);
+  for (const auto& folder : {root, root / "stress"})
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+      if (entry.path().extension() == ".json") scenes.push_back(entry.path());
+  std::sort(scenes.begin(), scenes.end());
+  return scenes;
+}
 
 constexpr uint64_t kSeedBase = 1;
 
@@ -85,36 +98,34 @@ std::vector<bool> lightTracerPixels(const SceneFile& file) {
 struct SceneStatistics {
   std::string name;
   int tiles = 0;
-  std::array<std::optional<BatchRegions>, 3> image;                 // per integrator, all pixels
-  std::optional<BatchRegions> pathTracerMasked, lightTracerMasked;  // light tracer's pixels
-  std::vector<BatchRegions> pathTracerLengths, bdptLengths;         // per k (cornell-box)
+  std::array<std::optional<BatchRegions>, kCount> image;     // per integrator, all pixels
+  std::array<std::optional<BatchRegions>, kCount> masked;    // the light tracer's pixels
+  std::vector<BatchRegions> pathTracerLengths, bdptLengths;  // per k (cornell-box)
   uint64_t invalidSamples = 0;
 };
 
-SceneStatistics renderScene(int sceneIndex, bool pathLengths) {
+SceneStatistics renderScene(int sceneIndex, const std::filesystem::path& path, bool pathLengths) {
   SceneStatistics out;
-  out.name = kScenes[sceneIndex];
-  const SceneFile file =
-      studies::loadStudyScene(std::string(VERITY_SCENES_DIR) + "/" + out.name + ".json", kWidth);
+  out.name = path.parent_path().filename() == "stress" ? "stress/" + path.stem().string()
+                                                       : path.stem().string();
+  const SceneFile file = studies::loadStudyScene(path, kWidth);
   const Vector2i res = file.scene->camera().resolution();
   const std::vector<int> tiles = tileRegions(res.x(), res.y(), kTileSize, &out.tiles);
   std::vector<int> masked = tiles;
   const std::vector<bool> usable = lightTracerPixels(file);
   for (size_t i = 0; i < masked.size(); ++i)
     if (!usable[i]) masked[i] = -1;
-  for (int i = 0; i < 3; ++i)
-    out.image[i].emplace(tiles, out.tiles, out.name + " " + kIntegrators[i]);
-  out.pathTracerMasked.emplace(masked, out.tiles, out.name + " path tracer, masked");
-  out.lightTracerMasked.emplace(masked, out.tiles, out.name + " light tracer, masked");
   for (int k = 0; pathLengths && k <= kMaxBounces; ++k) {
     out.pathTracerLengths.emplace_back(tiles, out.tiles, fmt::format("path tracer k{}", k));
     out.bdptLengths.emplace_back(tiles, out.tiles, fmt::format("bdpt k{}", k));
   }
 
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < kCount; ++i) {
+    out.image[i].emplace(tiles, out.tiles, out.name + " " + kIntegrators[i]);
+    out.masked[i].emplace(masked, out.tiles, out.name + " " + kIntegrators[i] + ", masked");
     IntegratorSettings settings = studies::studyIntegrator(file, kIntegrators[i], kMaxBounces);
     const auto integrator = makeIntegrator(settings);
-    const bool lengths = pathLengths && i != kLightTracer;
+    const bool lengths = pathLengths && (i == kNee || i == kBdpt);
     for (int batch = 0; batch < kBatches; ++batch) {
       Film film(res);
       std::optional<ComponentImages> components;
@@ -128,110 +139,66 @@ SceneStatistics renderScene(int sceneIndex, bool pathLengths) {
       out.invalidSamples +=
           render(*file.scene, *integrator, *file.sampler, film, options).invalidSamples;
       out.image[i]->addBatch(film);
-      if (i == kPathTracer) out.pathTracerMasked->addBatch(film);
-      if (i == kLightTracer) out.lightTracerMasked->addBatch(film);
+      out.masked[i]->addBatch(film);
       for (int k = 0; lengths && k <= kMaxBounces; ++k) {
         const int c = components->layout().pathLengthIndex(k);
-        (i == kPathTracer ? out.pathTracerLengths : out.bdptLengths)[k].addBatch(
-            components->film(c));
+        (i == kNee ? out.pathTracerLengths : out.bdptLengths)[k].addBatch(components->film(c));
       }
     }
   }
   return out;
 }
 
-// The comparisons of one family, decided together by one Holm correction.
-struct Family {
-  std::vector<std::string> names;
-  std::vector<ComparisonResult> results;
-
-  void add(const std::string& name, const PixelStatistics& reference,
-           const PixelStatistics& other) {
-    ComparisonOptions options;
-    options.tileSize = 1;  // one "pixel" per tile (batch_regions.h)
-    options.alpha = kFamilyWiseLevel;
-    names.push_back(name);
-    results.push_back(compareImages(reference, other, options));
-  }
-
-  struct Decision {
-    int rejections = 0;
-    double detectableBias = 0;  // uniform relative bias found with 90% power, lower bound
-  };
-
-  // Holm over every test of every comparison; prints each comparison's smallest p and its
-  // Holm-adjusted value in the whole family.
-  Decision decide(const char* title) const {
-    std::vector<double> p;
-    for (const ComparisonResult& r : results)
-      for (const TileTest& t : r.tests) p.push_back(t.welch.p);
-    const HolmResult holm = holmBonferroni(p, kFamilyWiseLevel);
-    fmt::print("{}: {} tests, family-wise level {}, Holm rejections {}\n", title, p.size(),
-               kFamilyWiseLevel, holm.rejections);
-    // Batches correlate the tiles of a splatting render, so every test is its own group:
-    // the power is then a lower bound whatever the dependence (power.h).
-    std::vector<PowerTerm> terms;
-    for (const ComparisonResult& r : results)
-      for (const TileTest& t : r.tests)
-        terms.push_back({0.5 * (t.pooled.a.mean + t.pooled.b.mean),
-                         t.pooled.a.variance + t.pooled.b.variance, t.welch.df,
-                         static_cast<int>(terms.size())});
-    const Decision decision{
-        holm.rejections,
-        detectableRelativeBias(terms, static_cast<int>(p.size()), kFamilyWiseLevel, 0.9)};
-    fmt::print("  uniform relative bias detected with 90% power (lower bound): {:.2f}%\n",
-               100 * decision.detectableBias);
-    size_t i = 0;
-    for (size_t c = 0; c < results.size(); ++c) {
-      double smallest = 1, adjusted = 1;
-      int rejected = 0;
-      for (size_t j = 0; j < results[c].tests.size(); ++j, ++i) {
-        if (p[i] < smallest) smallest = p[i];
-        adjusted = std::min(adjusted, holm.adjusted[i]);
-        rejected += holm.rejected[i];
-      }
-      fmt::print("  {:34} {:3} tests  smallest p {:9.3g}  Holm-adjusted {:6.3g}  {}\n", names[c],
-                 results[c].tests.size(), smallest, adjusted,
-                 rejected ? fmt::format("DIFFER ({} rejected)", rejected) : "agree");
-      if (rejected) fmt::print("{}", comparisonSummary(results[c], 3));
-    }
-    return decision;
-  }
-};
-
 // Every scene rendered by every integrator.
 std::vector<SceneStatistics> renderAll() {
   const auto start = std::chrono::steady_clock::now();
   std::vector<SceneStatistics> scenes;
-  for (int s = 0; s < int(std::size(kScenes)); ++s) scenes.push_back(renderScene(s, s == 0));
-  fmt::print("rendered {} scenes x 3 integrators, {} batches of {}/{}/{} spp, in {:.1f} s\n",
-             scenes.size(), kBatches, kBatchSpp[0], kBatchSpp[1], kBatchSpp[2],
+  const std::vector<std::filesystem::path> files = allScenes();
+  for (int s = 0; s < int(files.size()); ++s)
+    scenes.push_back(renderScene(s, files[s], files[s].stem() == "cornell-box"));
+  fmt::print("rendered {} scenes x {} integrators, {} batches of {}/{}/{}/{}/{} spp, in {:.1f} s\n",
+             scenes.size(), int(kCount), kBatches, kBatchSpp[0], kBatchSpp[1], kBatchSpp[2],
+             kBatchSpp[3], kBatchSpp[4],
              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return scenes;
 }
 
-// The family of the image comparisons, with BDPT's images scaled by `bdptGain`.
-Family imageFamily(const std::vector<SceneStatistics>& scenes, double bdptGain) {
-  Family family;
-  for (const SceneStatistics& s : scenes) {
-    family.add(s.name + ": bdpt", s.image[kPathTracer]->statistics(),
-               scaledStatistics(s.image[kBdpt]->statistics(), bdptGain));
-    family.add(s.name + ": light_tracer", s.pathTracerMasked->statistics(),
-               s.lightTracerMasked->statistics());
-  }
+// Whether the light tracer's pixels of a scene hold anything to compare.
+bool anyMaskedPixel(const SceneStatistics& s) {
+  const PixelStatistics m = s.masked[kNee]->statistics();
+  return std::any_of(m.samples.begin(), m.samples.end(), [](double n) { return n > 0; });
+}
+
+// The family of every pair's image comparisons, with BDPT's images scaled by `bdptGain`.
+ComparisonFamily imageFamily(const std::vector<SceneStatistics>& scenes, double bdptGain) {
+  ComparisonFamily family(kFamilyWiseLevel);
+  const auto statistics = [&](const std::optional<BatchRegions>& regions, int i) {
+    return i == kBdpt ? scaledStatistics(regions->statistics(), bdptGain) : regions->statistics();
+  };
+  for (const SceneStatistics& s : scenes)
+    for (int a = 0; a < kCount; ++a)
+      for (int b = a + 1; b < kCount; ++b) {
+        const std::string name =
+            fmt::format("{}: {} / {}", s.name, kIntegrators[a], kIntegrators[b]);
+        if (b != kLightTracer)
+          family.add(name, statistics(s.image[a], a), statistics(s.image[b], b));
+        else if (anyMaskedPixel(s))
+          family.add(name + ", masked", statistics(s.masked[a], a), s.masked[b]->statistics());
+      }
   return family;
 }
 
 // One test, so that CTest (which runs each test in its own process) renders once.
-TEST(ShippedScenes, BdptAndLightTracerMatchThePathTracer) {
+TEST(ShippedScenes, EveryIntegratorMatchesEveryOther) {
   const std::vector<SceneStatistics> scenes = renderAll();
   for (const SceneStatistics& s : scenes) EXPECT_EQ(s.invalidSamples, 0u) << s.name;
   EXPECT_EQ(imageFamily(scenes, 1).decide("images, all scenes").rejections, 0);
 
   // Per path length k on cornell-box: BDPT's weighted strategies of length k summed.
-  const SceneStatistics& box = scenes.front();
+  const SceneStatistics& box = *std::find_if(scenes.begin(), scenes.end(),
+                                             [](const auto& s) { return s.name == "cornell-box"; });
   ASSERT_EQ(box.bdptLengths.size(), size_t(kMaxBounces + 1));
-  Family lengths;
+  ComparisonFamily lengths(kFamilyWiseLevel);
   for (int k = 0; k <= kMaxBounces; ++k)
     lengths.add(fmt::format("{}: length {}", box.name, k), box.pathTracerLengths[k].statistics(),
                 box.bdptLengths[k].statistics());
@@ -240,7 +207,7 @@ TEST(ShippedScenes, BdptAndLightTracerMatchThePathTracer) {
   // Power: the image family must fail when BDPT is 2% too bright everywhere. The power bound
   // must cover 2% before the detection means anything; a 1% error in one scene is shown
   // detected by end_to_end_test and bdpt_strategies_test at their sample counts.
-  const Family::Decision brighter = imageFamily(scenes, 1.02).decide("bdpt 2% brighter");
+  const ComparisonFamily::Decision brighter = imageFamily(scenes, 1.02).decide("bdpt 2% brighter");
   ASSERT_LT(brighter.detectableBias, 0.02);
   EXPECT_GT(brighter.rejections, 0);
 }
