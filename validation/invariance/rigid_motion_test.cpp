@@ -1,5 +1,5 @@
-// Rigid-motion invariance (issue 17): every shipped and stress scene, moved as a whole with
-// its camera (rigid_motion.h: onto the coordinate planes, far away, turned by 90° steps and by
+// Rigid-motion invariance (issue 17): every shipped, stress and cross-check scene, moved as a whole
+// with its camera (rigid_motion.h: onto the coordinate planes, far away, turned by 90° steps and by
 // 37°, mirrored), must render the same image with every integrator. Nothing here compares
 // two integrators, so no shared bug can hide: a floor at y = 0 made next-event estimation 21%
 // dark while every integrator-against-integrator test passed.
@@ -29,6 +29,8 @@
 namespace verity::validation {
 namespace {
 
+const std::filesystem::path kScenes = std::filesystem::path(VERITY_SOURCE_DIR) / "scenes";
+
 constexpr int kWidth = 32;
 constexpr int kTileSize = 16;
 constexpr int kMaxBounces = 5;
@@ -38,22 +40,6 @@ constexpr double kFamilyWiseLevel = 0.01;
 
 const char* const kIntegrators[] = {"path_tracer_mats", "path_tracer_nee", "path_tracer_mis",
                                     "bdpt", "light_tracer"};
-
-// Every shipped and stress scene, by name.
-std::vector<std::filesystem::path> allScenes() {
-  std::vector<std::filesystem::path> scenes;
-  const std::filesystem::path root = std::filesystem::path(VERITY_SOURCE_DIR) / "scenes";
-  for (const auto& folder : {root, root / "stress"})
-    for (const auto& entry : std::filesystem::directory_iterator(folder))
-      if (entry.path().extension() == ".json") scenes.push_back(entry.path());
-  std::sort(scenes.begin(), scenes.end());
-  return scenes;
-}
-
-std::string sceneName(const std::filesystem::path& file) {
-  return file.parent_path().filename().string() == "stress" ? "stress/" + file.stem().string()
-                                                            : file.stem().string();
-}
 
 // `batches` independent renders of `spp` samples per pixel, as region means.
 BatchRegions renderBatches(const SceneFile& file, const std::string& integratorName,
@@ -117,9 +103,9 @@ TEST(RigidMotion, ImagesDoNotChange) {
   const auto start = std::chrono::steady_clock::now();
   ComparisonFamily family(kFamilyWiseLevel);
   int renders = 0;
-  for (const std::filesystem::path& file : allScenes()) {
+  for (const std::filesystem::path& file : studies::shippedScenes(kScenes)) {
     const Scene s = prepare(file, kWidth);
-    const std::string name = sceneName(file);
+    const std::string name = studies::shippedSceneName(file);
     const std::vector<RigidMotion> motions = standardMotions(*s.loaded.scene);
     std::string names;
     for (const RigidMotion& motion : motions) names += " " + motion.name;
@@ -146,8 +132,7 @@ TEST(RigidMotion, ImagesDoNotChange) {
 // The power check: with enough samples the comparison finds a 1% brightness change. The
 // family holds one comparison, decided at 1% like the suite's.
 TEST(RigidMotion, FindsAOnePercentChange) {
-  const Scene s =
-      prepare(std::filesystem::path(VERITY_SOURCE_DIR) / "scenes" / "cornell-box.json", kWidth);
+  const Scene s = prepare(kScenes / "cornell-box.json", kWidth);
   const RigidMotion planes = standardMotions(*s.loaded.scene).front();
   ASSERT_EQ(planes.name, "planes");
   constexpr int kPowerSpp = 128;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -47,6 +48,21 @@ SceneFile loadStudyScene(const std::filesystem::path& file, int width) {
   const std::optional<nlohmann::json> scene = sceneJsonAtWidth(file, width);
   // A file that is not JSON: let the loader report the problem in its own words.
   return scene ? loadSceneText(scene->dump(), file) : loadScene(file);
+}
+
+std::vector<std::filesystem::path> shippedScenes(const std::filesystem::path& scenesDir) {
+  std::vector<std::filesystem::path> scenes;
+  for (const auto& folder : {scenesDir, scenesDir / "stress", scenesDir / "crosscheck"})
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+      if (entry.path().extension() == ".json") scenes.push_back(entry.path());
+  std::sort(scenes.begin(), scenes.end());
+  return scenes;
+}
+
+std::string shippedSceneName(const std::filesystem::path& file) {
+  const std::string folder = file.parent_path().filename().string();
+  const std::string name = file.stem().string();
+  return folder == "stress" || folder == "crosscheck" ? folder + "/" + name : name;
 }
 
 IntegratorSettings studyIntegrator(const SceneFile& file, const std::string& type, int maxBounces) {

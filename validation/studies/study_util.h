@@ -29,6 +29,12 @@ SceneFile loadStudyScene(const std::filesystem::path& file, int width);
 // The scene's JSON with the camera's resolution rewritten that way, or nullopt when the file
 // is not JSON; throws VerityError when it cannot be read.
 std::optional<nlohmann::json> sceneJsonAtWidth(const std::filesystem::path& file, int width);
+// Every scene this project ships, sorted: scenes/*.json, scenes/stress/*.json and
+// scenes/crosscheck/*.json under `scenesDir`.
+std::vector<std::filesystem::path> shippedScenes(const std::filesystem::path& scenesDir);
+// A shipped scene's name as the tests print it: "cornell-box", "stress/floor-40".
+std::string shippedSceneName(const std::filesystem::path& file);
+
 // The integrator settings of `file` with the type (any accepted spelling) and max bounces
 // (if ≥ 0) overridden; throws VerityError for an unknown type.
 IntegratorSettings studyIntegrator(const SceneFile& file, const std::string& type, int maxBounces);

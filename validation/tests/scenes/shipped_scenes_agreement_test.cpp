@@ -1,8 +1,8 @@
-// Every unbiased integrator against every other, on every shipped and stress scene (issues 5
-// and 17): path_tracer_mats, path_tracer_nee, path_tracer_mis and bdpt pairwise, and the light
-// tracer against each of them. No integrator is the reference: a bug two of them share (the
-// shadow rays of next-event estimation, say) still shows against the ones that do not share
-// it, path_tracer_mats above all, which traces no shadow ray. Every scene at 32 pixels wide,
+// Every unbiased integrator against every other, on every shipped, stress and cross-check
+// scene (issues 5 and 17): path_tracer_mats, path_tracer_nee, path_tracer_mis and bdpt pairwise,
+// and the light tracer against each of them. No integrator is the reference: a bug two of them
+// share (the shadow rays of next-event estimation, say) still shows against the ones that do not
+// share it, path_tracer_mats above all, which traces no shadow ray. Every scene at 32 pixels wide,
 // max_bounces 5.
 //
 //   - Images. Per 16×16 tile and channel, a Welch t-test of one integrator's mean against the
@@ -52,17 +52,6 @@ enum { kMaterials = 0, kNee = 1, kMis = 2, kBdpt = 3, kLightTracer = 4, kCount =
 // the cheapest, so they get four times the samples.
 constexpr int kBatchSpp[] = {64, 64, 64, 16, 16};
 
-// Every shipped and stress scene.
-std::vector<std::filesystem::path> allScenes() {
-  std::vector<std::filesystem::path> scenes;
-  const std::filesystem::path root(VERITY_SCENES_DIR);
-  for (const auto& folder : {root, root / "stress"})
-    for (const auto& entry : std::filesystem::directory_iterator(folder))
-      if (entry.path().extension() == ".json") scenes.push_back(entry.path());
-  std::sort(scenes.begin(), scenes.end());
-  return scenes;
-}
-
 constexpr uint64_t kSeedBase = 1;
 
 uint64_t seedOf(int scene, int integrator, int batch) {
@@ -106,8 +95,7 @@ struct SceneStatistics {
 
 SceneStatistics renderScene(int sceneIndex, const std::filesystem::path& path, bool pathLengths) {
   SceneStatistics out;
-  out.name = path.parent_path().filename() == "stress" ? "stress/" + path.stem().string()
-                                                       : path.stem().string();
+  out.name = studies::shippedSceneName(path);
   const SceneFile file = studies::loadStudyScene(path, kWidth);
   const Vector2i res = file.scene->camera().resolution();
   const std::vector<int> tiles = tileRegions(res.x(), res.y(), kTileSize, &out.tiles);
@@ -153,7 +141,7 @@ SceneStatistics renderScene(int sceneIndex, const std::filesystem::path& path, b
 std::vector<SceneStatistics> renderAll() {
   const auto start = std::chrono::steady_clock::now();
   std::vector<SceneStatistics> scenes;
-  const std::vector<std::filesystem::path> files = allScenes();
+  const std::vector<std::filesystem::path> files = studies::shippedScenes(VERITY_SCENES_DIR);
   for (int s = 0; s < int(files.size()); ++s)
     scenes.push_back(renderScene(s, files[s], files[s].stem() == "cornell-box"));
   fmt::print("rendered {} scenes x {} integrators, {} batches of {}/{}/{}/{}/{} spp, in {:.1f} s\n",
