@@ -97,21 +97,14 @@ TEST(PbrtCrosscheck, OurIntegratorsAgreeWithPbrt) {
       pbrtImage.addBatch(image);
     }
     for (const char* integratorName : c.integrators) {
-      const IntegratorSettings settings = studies::studyIntegrator(file, integratorName, -1);
-      const auto integrator = makeIntegrator(settings);
       const std::string key = fmt::format("{} {}", c.scene, integratorName);
       BatchRegions ours(regionOf, tiles, key), oursImage(whole, 1, key + " image");
-      for (int batch = 0; batch < kBatches; ++batch) {
-        Film film(res);
-        RenderOptions options;
-        options.samplesPerPixel = kBatchSpp;
-        options.seed = studies::hashString(fmt::format("{} batch {}", key, batch));
-        file.sampler->setSeed(options.seed);
-        EXPECT_EQ(render(*file.scene, *integrator, *file.sampler, film, options).invalidSamples,
-                  0u);
-        ours.addBatch(film);
-        oursImage.addBatch(film);
-      }
+      const uint64_t invalid = studies::renderBatches(file, integratorName, -1, kBatches, kBatchSpp,
+                                                      key, [&](const Film& film) {
+                                                        ours.addBatch(film);
+                                                        oursImage.addBatch(film);
+                                                      });
+      EXPECT_EQ(invalid, 0u) << key;
       fmt::print("| {} | {} | {} |\n", c.scene, integratorName,
                  relativeDifference(pbrtImage.statistics(), oursImage.statistics()));
       family.add(key, pbrt.statistics(), ours.statistics());

@@ -42,21 +42,12 @@ const char* const kIntegrators[] = {"path_tracer_mats", "path_tracer_nee", "path
                                     "bdpt", "light_tracer"};
 
 // `batches` independent renders of `spp` samples per pixel, as region means.
-BatchRegions renderBatches(const SceneFile& file, const std::string& integratorName,
+BatchRegions renderBatches(const SceneFile& file, const std::string& integrator,
                            const std::vector<int>& regionOf, int regions, int batches, int spp,
                            const std::string& key) {
-  const IntegratorSettings settings = studies::studyIntegrator(file, integratorName, kMaxBounces);
-  const auto integrator = makeIntegrator(settings);
   BatchRegions out(regionOf, regions, key);
-  for (int batch = 0; batch < batches; ++batch) {
-    Film film(file.scene->camera().resolution());
-    RenderOptions options;
-    options.samplesPerPixel = spp;
-    options.seed = studies::hashString(fmt::format("{} batch {}", key, batch));
-    file.sampler->setSeed(options.seed);
-    render(*file.scene, *integrator, *file.sampler, film, options);
-    out.addBatch(film);
-  }
+  studies::renderBatches(file, integrator, kMaxBounces, batches, spp, key,
+                         [&](const Film& film) { out.addBatch(film); });
   return out;
 }
 

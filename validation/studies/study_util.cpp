@@ -143,6 +143,23 @@ TimedRender timedRender(const SceneFile& file, const Integrator& integrator, Fil
   return out;
 }
 
+uint64_t renderBatches(const SceneFile& file, const std::string& integrator, int maxBounces,
+                       int batches, int spp, const std::string& key,
+                       const std::function<void(const Film&)>& onBatch) {
+  const auto render = makeIntegrator(studyIntegrator(file, integrator, maxBounces));
+  uint64_t invalid = 0;
+  for (int batch = 0; batch < batches; ++batch) {
+    Film film(file.scene->camera().resolution());
+    RenderOptions options;
+    options.samplesPerPixel = spp;
+    options.seed = hashString(fmt::format("{} batch {}", key, batch));
+    file.sampler->setSeed(options.seed);
+    invalid += verity::render(*file.scene, *render, *file.sampler, film, options).invalidSamples;
+    onBatch(film);
+  }
+  return invalid;
+}
+
 MachineInfo machineInfo() {
   MachineInfo m;
   char host[256] = {};

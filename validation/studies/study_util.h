@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
@@ -56,6 +57,13 @@ struct TimedRender {
 TimedRender timedRender(const SceneFile& file, const Integrator& integrator, Film& film, int spp,
                         int threads, uint64_t seed, double timeLimit = 0,
                         ComponentImages* components = nullptr);
+
+// `batches` independent renders of `spp` samples per pixel with `integrator` (max bounces
+// `maxBounces`, the file's when negative), batch i seeded by hashString("<key> batch <i>");
+// each film is handed to `onBatch`. Returns the invalid samples of all batches.
+uint64_t renderBatches(const SceneFile& file, const std::string& integrator, int maxBounces,
+                       int batches, int spp, const std::string& key,
+                       const std::function<void(const Film&)>& onBatch);
 
 struct MachineInfo {
   std::string hostname, cpuModel;
