@@ -30,7 +30,8 @@ BsdfSubject::BsdfSubject(BsdfSetup setup)
     : setup_(std::move(setup)),
       frame_(setup_.normal.normalized()),
       wiLocal_(frame_.toLocal(setup_.wi).normalized()),
-      domain_(sphereDomain(setup_.resolution)) {}
+      domain_(sphereDomain(setup_.resolution)),
+      ior_(setup_.material->interiorIndex()) {}
 
 double BsdfSubject::pdf(double phi, double z) const {
   const Vector3f wo = frame_.toLocal(sphereDirection(phi, z).cast<float>());
@@ -95,8 +96,8 @@ void BsdfSubject::checkPair(const Vector3f& wo, Audit& audit) const {
   const Color3 f = m.eval(query_, wiLocal_, wo, TransportMode::Radiance);
   const Color3 fr = m.eval(query_, wo, wiLocal_, TransportMode::Radiance);
   const Color3 fi = m.eval(query_, wiLocal_, wo, TransportMode::Importance);
-  const double etaI = wiLocal_.z() > 0 ? 1.0 : setup_.ior;
-  const double etaO = wo.z() > 0 ? 1.0 : setup_.ior;
+  const double etaI = wiLocal_.z() > 0 ? 1.0 : ior_;
+  const double etaO = wo.z() > 0 ? 1.0 : ior_;
   for (int c = 0; c < 3; ++c) {
     const double a = f[c] * etaO * etaO, b = fr[c] * etaI * etaI;
     if (!relativelyClose(a, b, kReciprocityTolerance)) {
@@ -120,13 +121,13 @@ std::vector<double> BsdfSubject::breakpointsY(double phi) const {
   // The shading horizon n·ω = 0.
   const Vector3d n = frame_.n.cast<double>();
   std::vector<double> z = coneCrossings(n, 0, phi);
-  if (setup_.ior != 1) {
+  if (ior_ != 1) {
     // Transmission ends where the generalised half vector −(ηi ωi + ηo ωo) turns
     // perpendicular to n (Walter et al. 2007, eq. 16), i.e. on the cone
     // n·ωo = −ηi (n·ωi) / ηo; a distribution with D > 0 at the horizon (GGX at large
     // alpha) jumps there.
     const double cosI = wiLocal_.z();
-    const double etaI = cosI > 0 ? 1.0 : setup_.ior, etaO = cosI > 0 ? setup_.ior : 1.0;
+    const double etaI = cosI > 0 ? 1.0 : ior_, etaO = cosI > 0 ? ior_ : 1.0;
     for (double c : coneCrossings(n, -etaI * cosI / etaO, phi)) z.push_back(c);
   }
   return z;
@@ -136,9 +137,9 @@ std::vector<Point2d> BsdfSubject::peaks() const {
   const Vector3d wi = wiLocal_.cast<double>();
   std::vector<Point2d> out{
       sphereCoords(frame_.toWorld(Vector3d(-wi.x(), -wi.y(), wi.z()).cast<float>()))};
-  if (setup_.ior != 1) {
+  if (ior_ != 1) {
     // Snell's law about the shading normal, from wi's side.
-    const double eta = wi.z() > 0 ? setup_.ior : 1 / setup_.ior;  // far over near
+    const double eta = wi.z() > 0 ? ior_ : 1 / ior_;  // far over near
     const double cosI = std::fabs(wi.z()), sin2T = (1 - cosI * cosI) / (eta * eta);
     if (sin2T < 1) {
       const double cosT = std::sqrt(1 - sin2T);

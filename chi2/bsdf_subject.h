@@ -23,9 +23,6 @@ struct BsdfSetup {
   std::shared_ptr<const Material> material;
   Vector3f normal = Vector3f::UnitZ();  // shading normal in world space
   Vector3f wi = Vector3f::UnitZ();      // incident direction in world space
-  // Relative index of refraction of the material's interior (1 for opaque materials); the
-  // exterior is 1.
-  float ior = 1.0f;
   bool checkReciprocity = true;
   int resolution = 32;  // cells in cos θ; twice as many in φ
 };
@@ -53,6 +50,7 @@ class BsdfSubject : public Subject {
   Frame frame_;
   Vector3f wiLocal_;
   Domain domain_;
+  double ior_;  // the material's own index: the exterior is 1
   TextureQuery query_;
   mutable std::atomic<long long> delta_{0};
 };

@@ -18,7 +18,6 @@ struct Chi2Args {
   double incoming = 0;
   std::string normal = "0,0,1";
   bool inside = false;
-  float ior = 1.0f;
   long long samples = chi2::suite::kSamples;
   uint64_t seed = 1;
   std::string output;
@@ -48,7 +47,6 @@ int runOne(const Chi2Args& a) {
   s.material = chi2::suite::makeMaterial(a.material);
   s.normal = parseVector(a.normal);
   s.wi = chi2::incidentDirection(a.incoming, a.inside);
-  s.ior = a.ior;
   s.resolution = chi2::suite::kSphereResolution;
   chi2::BsdfSubject subject(s);
   chi2::TestOptions o;
@@ -124,7 +122,6 @@ void addChi2Command(CLI::App& app) {
       ->check(CLI::Range(0.0, 90.0));
   cmd->add_option("--normal", args->normal, "shading normal x,y,z (world space)");
   cmd->add_flag("--inside", args->inside, "incident direction from below the surface");
-  cmd->add_option("--ior", args->ior, "interior index, for the reciprocity check of transmission");
   cmd->add_option("--samples", args->samples, "number of samples")->check(CLI::PositiveNumber);
   cmd->add_option("--seed", args->seed, "random seed");
   cmd->add_option("-o,--output", args->output, "prefix of the PNG heatmaps");

@@ -65,8 +65,7 @@ std::vector<MicrofacetCase> microfacetCases() {
 
 std::vector<BsdfCase> bsdfCases() {
   std::vector<BsdfCase> v;
-  auto add = [&](std::string name, std::string json, double th, bool inside, bool rotated,
-                 float ior) {
+  auto add = [&](std::string name, std::string json, double th, bool inside, bool rotated) {
     BsdfCase c;
     c.name =
         fmt::format("{}_{}_t{}{}", name, inside ? "in" : "out", token(th), rotated ? "_rot" : "");
@@ -74,23 +73,21 @@ std::vector<BsdfCase> bsdfCases() {
     c.incidence = th;
     c.inside = inside;
     c.rotated = rotated;
-    c.ior = ior;
     v.push_back(std::move(c));
   };
   for (bool rot : {false, true}) {
     for (double th : kIncidences) {
-      add("lambertian", R"({"type":"lambertian","albedo":0.8})", th, false, rot, 1);
+      add("lambertian", R"({"type":"lambertian","albedo":0.8})", th, false, rot);
       for (double e : {2.0, 10.0, 100.0}) {
         add("phong_e" + token(e),
-            fmt::format(R"({{"type":"phong","albedo":0.8,"exponent":{}}})", e), th, false, rot, 1);
+            fmt::format(R"({{"type":"phong","albedo":0.8,"exponent":{}}})", e), th, false, rot);
         add("blinnphong_e" + token(e),
-            fmt::format(R"({{"type":"blinnphong","albedo":0.8,"exponent":{}}})", e), th, false, rot,
-            1);
+            fmt::format(R"({{"type":"blinnphong","albedo":0.8,"exponent":{}}})", e), th, false,
+            rot);
       }
       for (double s : {0.1, 0.35, 1.0})
         add("orennayar_s" + token(s),
-            fmt::format(R"({{"type":"oren-nayar","albedo":0.8,"sigma":{}}})", s), th, false, rot,
-            1);
+            fmt::format(R"({{"type":"oren-nayar","albedo":0.8,"sigma":{}}})", s), th, false, rot);
       // Rough conductors with the seed report's complex index 0.34 + 3.9i.
       for (const char* d : kDistributions)
         for (const char* s : kSamplings)
@@ -98,7 +95,7 @@ std::vector<BsdfCase> bsdfCases() {
             add(fmt::format("{}_{}_a{}", d, s, token(a)),
                 fmt::format(R"({{"type":"{}","alpha":{},"ior":0.34,"ext":3.9,"sampling":"{}"}})", d,
                             a, s),
-                th, false, rot, 1);
+                th, false, rot);
       // Rough dielectric: the alpha sweep at ior 1.5, from outside and from inside (beyond
       // the critical angle of 41.8° the inside incidences are under total internal
       // reflection for the macro-surface); the rotated normal from outside only.
@@ -111,7 +108,7 @@ std::vector<BsdfCase> bsdfCases() {
                   fmt::format(R"({{"type":"rough_dielectric","distribution":"{}","alpha":{},)"
                               R"("ior":1.5,"sampling":"{}"}})",
                               d, a, s),
-                  th, inside, rot, 1.5f);
+                  th, inside, rot);
             }
     }
   }
@@ -128,7 +125,7 @@ std::vector<BsdfCase> bsdfCases() {
                 fmt::format(R"({{"type":"rough_dielectric","distribution":"{}","alpha":0.3,)"
                             R"("ior":{},"sampling":"{}"}})",
                             d, ior, s),
-                th, inside, false, float(ior));
+                th, inside, false);
       }
   // The quick subset: every 25th configuration, a fixed stride over all material types.
   for (size_t i = 0; i < v.size(); ++i) v[i].quick = i % 25 == 0;
@@ -201,7 +198,6 @@ BsdfSetup setupFor(const BsdfCase& c) {
   s.material = makeMaterial(c.json);
   s.normal = c.rotated ? rotatedNormal() : Vector3f::UnitZ();
   s.wi = incidentDirection(c.incidence, c.inside);
-  s.ior = c.ior;
   s.resolution = kSphereResolution;
   return s;
 }

@@ -50,7 +50,6 @@ struct BsdfCase {
   double incidence = 0;  // degrees from the geometric normal +z
   bool inside = false;   // wi below the surface (rough dielectric)
   bool rotated = false;  // shading normal normalize(0.25, 0.5, 1)
-  float ior = 1.0f;      // interior index for reciprocity (1 when opaque)
   bool quick = false;
 };
 

@@ -22,7 +22,6 @@ TestResult run(Flaw flaw, float ior, double incidence, bool inside, const std::s
   s.name = "reference ggx " + name;
   s.material = std::make_shared<ReferenceGgx>(0.3f, ior, flaw);
   s.wi = incidentDirection(incidence, inside);
-  s.ior = ior == 0 ? 1.0f : ior;
   s.resolution = suite::kSphereResolution;
   BsdfSubject subject(s);
   TestOptions o;

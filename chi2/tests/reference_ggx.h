@@ -65,6 +65,7 @@ class ReferenceGgx : public Material {
     return s;
   }
   uint32_t lobes() const override { return kGlossy | kReflection | (ior_ ? kTransmission : 0); }
+  float interiorIndex() const override { return ior_ == 0 ? 1 : ior_; }
   bool isTextured() const override { return false; }
 
  private:

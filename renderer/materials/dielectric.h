@@ -28,7 +28,7 @@ class Dielectric : public Material {
   }
   uint32_t lobes() const override { return kReflection | kTransmission | kSpecular; }
   bool isTextured() const override { return false; }
-  float ior() const { return ior_; }
+  float interiorIndex() const override { return ior_; }
 
  private:
   float ior_;

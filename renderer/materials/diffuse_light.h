@@ -10,8 +10,7 @@ class DiffuseLight : public Material {
  public:
   explicit DiffuseLight(const Color3& emit) : emit_(emit) {}
 
-  Color3 eval(const TextureQuery&, const Vector3f&, const Vector3f&,
-              TransportMode) const override {
+  Color3 eval(const TextureQuery&, const Vector3f&, const Vector3f&, TransportMode) const override {
     return Color3::Zero();
   }
   float pdf(const TextureQuery&, const Vector3f&, const Vector3f&) const override { return 0; }

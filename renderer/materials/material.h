@@ -48,9 +48,8 @@ class Material {
   virtual float pdf(const TextureQuery& q, const Vector3f& wi, const Vector3f& wo) const = 0;
   // `uLobe` chooses among lobes, `u` samples the chosen one. No sample (nullopt) when the
   // material cannot scatter from wi; never a sample with a non-finite or negative weight.
-  virtual std::optional<BsdfSample> sample(const TextureQuery& q, const Vector3f& wi,
-                                           float uLobe, const Point2f& u,
-                                           TransportMode mode) const = 0;
+  virtual std::optional<BsdfSample> sample(const TextureQuery& q, const Vector3f& wi, float uLobe,
+                                           const Point2f& u, TransportMode mode) const = 0;
 
   // The union of the lobes this material may sample; kNoLobe for a pure absorber (lights).
   virtual uint32_t lobes() const = 0;
@@ -60,6 +59,9 @@ class Material {
   // Radiance emitted towards local direction w (front side only for DIRT lights).
   virtual Color3 emitted(const TextureQuery& q, const Vector3f& w) const { return Color3::Zero(); }
   virtual bool isEmitter() const { return false; }
+  // The index of refraction inside over outside of a material that transmits; 1 for one
+  // that does not. Radiance crossing the interface scales by its square.
+  virtual float interiorIndex() const { return 1; }
   // Whether any parameter varies over the surface (for the scene summary).
   virtual bool isTextured() const = 0;
 };

@@ -31,6 +31,7 @@ class RoughDielectric : public Material {
   uint32_t lobes() const override {
     return kReflection | kTransmission | (indexMatched_ ? kSpecular : kGlossy);
   }
+  float interiorIndex() const override { return ior_; }
   bool isTextured() const override { return false; }
 
  private:

@@ -1,0 +1,44 @@
+// `verity chi2` tests a material with the index of refraction the material itself states: a
+// rough dielectric passes from outside, from inside and with an index below 1, and no second
+// copy of the index can be given on the command line (a default of 1 beside the material's
+// 1.5 failed every reciprocity check by 1.5²).
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "child_process.h"
+
+namespace verity {
+namespace {
+
+testing::Outcome chi2(const std::string& material, std::vector<std::string> extra) {
+  std::vector<std::string> args = {VERITY_BINARY, "chi2",      "--material",
+                                   material,      "--samples", "200000"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return testing::run(args);
+}
+
+std::string roughDielectric(double ior) {
+  return fmt::format(R"({{"type":"rough_dielectric","distribution":"beckmann","alpha":0.4,)"
+                     R"("ior":{}}})",
+                     ior);
+}
+
+TEST(Chi2Command, RoughDielectricsPassWithTheirOwnIndex) {
+  for (const double ior : {1.5, 0.6667})
+    for (const bool inside : {false, true}) {
+      std::vector<std::string> extra = {"--incoming", "45"};
+      if (inside) extra.push_back("--inside");
+      const testing::Outcome r = chi2(roughDielectric(ior), extra);
+      EXPECT_EQ(r.status, 0) << "ior " << ior << (inside ? " inside" : " outside") << "\n"
+                             << r.stderrText;
+    }
+}
+
+TEST(Chi2Command, TheIndexIsNotASecondOption) {
+  const testing::Outcome r = chi2(roughDielectric(1.5), {"--incoming", "45", "--ior", "1.5"});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.stderrText.find("--ior"), std::string::npos) << r.stderrText;
+}
+
+}  // namespace
+}  // namespace verity
