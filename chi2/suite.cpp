@@ -187,7 +187,8 @@ int statisticalCheckCount() {
 
 std::shared_ptr<const Material> makeMaterial(const std::string& json) {
   TextureFactory textures;
-  MaterialFactory factory(textures);
+  std::vector<VerityError> warnings;  // the sweep's albedos are at most 1
+  MaterialFactory factory(textures, warnings);
   return factory.make(JsonNode::parse(json, "inline"));
 }
 

@@ -26,6 +26,7 @@ struct RenderArgs {
   std::string output;
   bool variance = false;
   bool explain = false;
+  bool strict = false;      // the scene's warnings are errors
   std::string strategies;   // directory for per-strategy images (bdpt)
   std::string pathLengths;  // directory for per-path-length images
 };
@@ -52,6 +53,12 @@ void checkWritable(const std::filesystem::path& output) {
 
 int run(const RenderArgs& args) {
   SceneFile file = loadScene(args.scene);
+  for (const VerityError& warning : file.warnings)
+    fmt::print(stderr, "verity: warning: {}\n", warning.what());
+  if (args.strict && !file.warnings.empty())
+    throw VerityError(
+        args.scene, "",
+        fmt::format("{} warning(s), and --strict makes them errors", file.warnings.size()));
   IntegratorSettings settings = file.integrator;
   if (!args.integrator.empty()) {
     settings.type = canonicalIntegratorType(args.integrator);
@@ -173,6 +180,8 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--path-lengths", args->pathLengths,
                   "Directory for one image per path length (bounces) and a manifest.json")
       ->excludes(strategies);
+  cmd->add_flag("--strict", args->strict,
+                "Refuse a scene the loader warns about (an albedo above 1, a light emitting 0)");
   cmd->add_flag("--explain", args->explain,
                 "Print what the scene calls for (emitters, lobes, textures, strategies) and exit");
   cmd->callback([args] { throw CLI::RuntimeError(run(*args)); });

@@ -1,5 +1,7 @@
 #include "materials/material_factory.h"
 
+#include <fmt/format.h>
+
 #include "materials/blend.h"
 #include "materials/blinn_phong.h"
 #include "materials/dielectric.h"
@@ -43,19 +45,31 @@ TexturedColor parseRoughness(TextureFactory& textures, const JsonNode& node) {
 }
 }  // namespace
 
+TexturedColor MaterialFactory::parseAlbedo(const JsonNode& node) {
+  TexturedColor albedo = textures_.parse(node, {"albedo"}, Color3::Constant(0.8f));
+  const float bound = albedo.upperBound();
+  if (bound > 1)
+    warnings_.push_back(node[{"albedo"}].warning(fmt::format(
+        "{} {:g}, above 1: the surface reflects more light than reaches it (a white furnace "
+        "would gain energy)",
+        albedo.isConstant() ? "an albedo of" : "a texture that reaches", bound)));
+  return albedo;
+}
+
 std::shared_ptr<const Material> MaterialFactory::make(const JsonNode& node) {
   const std::string type = node.type();
   node.find({"name"});  // the name is read by the scene loader
   std::shared_ptr<const Material> material;
   if (type == "lambertian") {
-    material =
-        std::make_shared<Lambertian>(textures_.parse(node, {"albedo"}, Color3::Constant(0.8f)));
+    material = std::make_shared<Lambertian>(parseAlbedo(node));
   } else if (type == "diffuse light" || type == "diffuse_light") {
     const Color3 emit = node.getVector3({"emit"}, Vector3f::Ones()).array();
     if (!(emit >= 0).all()) node[{"emit"}].fail("emitted radiance must not be negative");
+    if ((emit == 0).all())
+      warnings_.push_back(node.warning("a diffuse light whose emit is 0 emits nothing"));
     material = std::make_shared<DiffuseLight>(emit);
   } else if (type == "metal") {
-    TexturedColor albedo = textures_.parse(node, {"albedo"}, Color3::Constant(0.8f));
+    TexturedColor albedo = parseAlbedo(node);
     TexturedColor roughness = parseRoughness(textures_, node);
     if (roughness.isConstant() && roughness.constant().mean() == 0) {
       material = std::make_shared<Mirror>(std::move(albedo));
@@ -73,7 +87,7 @@ std::shared_ptr<const Material> MaterialFactory::make(const JsonNode& node) {
     material = std::make_shared<Dielectric>(node.getFloat({"ior"}, 1.5f, Range::positive()));
   } else if (type == "phong" || type == "blinnphong" || type == "blinn_phong" ||
              type == "blinn-phong") {
-    TexturedColor albedo = textures_.parse(node, {"albedo"}, Color3::Constant(0.8f));
+    TexturedColor albedo = parseAlbedo(node);
     const float exponent = node.getFloat({"exponent"}, 10.0f, Range{0.0f, 1e6f});
     if (type == "phong")
       material = std::make_shared<Phong>(std::move(albedo), exponent);
@@ -83,7 +97,7 @@ std::shared_ptr<const Material> MaterialFactory::make(const JsonNode& node) {
     RoughConductor::Params p;
     p.distribution = type == "ggx" ? MicrofacetType::GGX : MicrofacetType::Beckmann;
     p.sampling = parseSampling(node);
-    p.albedo = textures_.parse(node, {"albedo"}, Color3::Constant(0.8f));
+    p.albedo = parseAlbedo(node);
     p.roughness =
         TexturedColor(Color3::Constant(node.getFloat({"ab", "alpha"}, 0.5f, Range::nonNegative())));
     p.eta = Color3::Constant(node.getFloat({"ior"}, 0.05f, Range::positive()));
@@ -96,7 +110,7 @@ std::shared_ptr<const Material> MaterialFactory::make(const JsonNode& node) {
     const float ior = node.getFloat({"ior"}, 1.5f, Range::positive());
     material = std::make_shared<RoughDielectric>(distribution, alpha, ior, parseSampling(node));
   } else if (type == "oren-nayar" || type == "oren_nayar") {
-    TexturedColor albedo = textures_.parse(node, {"albedo"}, Color3::Constant(0.8f));
+    TexturedColor albedo = parseAlbedo(node);
     const float sigma = node.getFloat({"sigma"}, 0.35f, Range::nonNegative());
     material = std::make_shared<OrenNayar>(std::move(albedo), sigma);
   } else if (type == "blend") {

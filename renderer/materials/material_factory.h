@@ -2,6 +2,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "materials/material.h"
 #include "scene/json_node.h"
@@ -12,7 +13,9 @@ namespace verity {
 // `node` is the material object itself; `named` resolves a material name (for `blend`).
 class MaterialFactory {
  public:
-  explicit MaterialFactory(TextureFactory& textures) : textures_(textures) {}
+  // Warnings (a material that would invent or lose energy) are appended to `warnings`.
+  MaterialFactory(TextureFactory& textures, std::vector<VerityError>& warnings)
+      : textures_(textures), warnings_(warnings) {}
   std::shared_ptr<const Material> make(const JsonNode& node);
   // `nameNode` is the "name" member, for the error when the name is already taken.
   void addNamed(const JsonNode& nameNode, std::shared_ptr<const Material> material);
@@ -20,7 +23,11 @@ class MaterialFactory {
   std::shared_ptr<const Material> reference(const JsonNode& node);
 
  private:
+  // The "albedo" member (0.8 when absent), with a warning when it can exceed 1.
+  TexturedColor parseAlbedo(const JsonNode& node);
+
   TextureFactory& textures_;
+  std::vector<VerityError>& warnings_;
   std::map<std::string, std::shared_ptr<const Material>> named_;
 };
 

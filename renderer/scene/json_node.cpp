@@ -323,8 +323,12 @@ void JsonNode::rejectUnknownKeys() const {
   }
 }
 
+VerityError JsonNode::warning(const std::string& problem) const {
+  return VerityError(source_->file.string(), path_.empty() ? "(top level)" : path_, problem);
+}
+
 void JsonNode::fail(const std::string& problem) const {
-  throw VerityError(source_->file.string(), path_.empty() ? "(top level)" : path_, problem);
+  throw warning(problem);
 }
 
 }  // namespace verity

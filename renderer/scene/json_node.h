@@ -42,6 +42,8 @@ class JsonNode {
   const nlohmann::json& value() const { return *value_; }
   const std::string& path() const { return path_; }
   const std::filesystem::path& file() const { return source_->file; }
+  // The error fail() would throw, as a value: a loader warning naming this value.
+  VerityError warning(const std::string& problem) const;
   // Resolves a file name relative to the scene file's folder.
   std::filesystem::path resolve(const std::string& name) const;
 

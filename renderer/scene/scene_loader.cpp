@@ -187,7 +187,7 @@ SceneFile build(const JsonNode& root, const std::filesystem::path& file) {
   result.scene = std::make_unique<Scene>();
   Scene& scene = *result.scene;
   TextureFactory textures;
-  MaterialFactory materials(textures);
+  MaterialFactory materials(textures, result.warnings);
 
   scene.setCamera(parseCamera(root[{"camera"}]));
   if (auto bg = root.find({"background"})) scene.setBackground(parseBackground(*bg, textures));

@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "core/error.h"
 #include "integrators/integrator_settings.h"
 #include "sampling/sampler.h"
 #include "scene/scene.h"
@@ -17,6 +19,10 @@ struct SceneFile {
   std::unique_ptr<Scene> scene;
   std::unique_ptr<Sampler> sampler;  // samplesPerPixel() is the file's sample count
   IntegratorSettings integrator;
+  // What the scene states but probably does not mean (an albedo above 1, a light emitting
+  // nothing), once per material, each naming the file and JSON path; `verity render` prints
+  // them, and with --strict refuses the scene.
+  std::vector<VerityError> warnings;
 };
 
 // Throws VerityError naming the file, the JSON path and the problem.

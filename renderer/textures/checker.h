@@ -11,6 +11,7 @@ class CheckerTexture : public Texture {
   CheckerTexture(TexturedColor even, TexturedColor odd, float scale, SolidMapping mapping = {})
       : even_(std::move(even)), odd_(std::move(odd)), scale_(scale), mapping_(mapping) {}
   Color3 eval(const TextureQuery& q) const override;
+  float upperBound() const override { return std::max(even_.upperBound(), odd_.upperBound()); }
 
  private:
   TexturedColor even_, odd_;

@@ -37,6 +37,7 @@ ImageTexture::ImageTexture(const std::filesystem::path& file, const std::string&
     for (size_t i = 0; i < rgb_.size(); ++i) rgb_[i] = table[data[i]];
     stbi_image_free(data);
   }
+  for (float v : rgb_) upperBound_ = std::max(upperBound_, v);
 }
 
 namespace {

@@ -14,6 +14,7 @@ class ImageTexture : public Texture {
   // Throws VerityError naming `jsonPath` when the file cannot be read.
   ImageTexture(const std::filesystem::path& file, const std::string& jsonPath);
   Color3 eval(const TextureQuery& q) const override;
+  float upperBound() const override { return upperBound_; }
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -23,6 +24,7 @@ class ImageTexture : public Texture {
  private:
   int width_ = 0, height_ = 0;
   std::vector<float> rgb_;
+  float upperBound_ = 0;  // the largest texel value
 };
 
 // The exact sRGB transfer curve (IEC 61966-2-1).

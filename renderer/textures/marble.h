@@ -12,6 +12,7 @@ class MarbleTexture : public Texture {
   MarbleTexture(TexturedColor veins, TexturedColor base, float scale, SolidMapping mapping = {})
       : veins_(std::move(veins)), base_(std::move(base)), scale_(scale), mapping_(mapping) {}
   Color3 eval(const TextureQuery& q) const override;
+  float upperBound() const override { return std::max(veins_.upperBound(), base_.upperBound()); }
 
  private:
   TexturedColor veins_, base_;

@@ -18,6 +18,8 @@ class Texture {
  public:
   virtual ~Texture() = default;
   virtual Color3 eval(const TextureQuery& q) const = 0;
+  // The largest value any channel can take anywhere.
+  virtual float upperBound() const = 0;
 };
 
 // A texture-valued material parameter.
@@ -31,6 +33,7 @@ class TexturedColor {
   // Scalar parameters (roughness, blend amount) read the mean of the channels.
   float evalScalar(const TextureQuery& q) const { return eval(q).mean(); }
   bool isConstant() const { return !texture_; }
+  float upperBound() const { return texture_ ? texture_->upperBound() : value_.maxCoeff(); }
   // Only meaningful when isConstant().
   const Color3& constant() const { return value_; }
 

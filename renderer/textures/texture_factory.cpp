@@ -1,5 +1,6 @@
 #include "textures/texture_factory.h"
 
+#include "scene/scene.h"
 #include "scene/transform_parser.h"
 #include "textures/checker.h"
 #include "textures/image_texture.h"
@@ -33,7 +34,10 @@ TexturedColor TextureFactory::parse(const JsonNode& node) {
   } else if (type == "marble") {
     TexturedColor veins = parse(node, {"veins"}, Color3::Constant(0.1f));
     TexturedColor base = parse(node, {"base"}, Color3::Constant(0.9f));
-    const float scale = node.getFloat({"scale"}, 1.0f, Range::positive());
+    // Beyond this scale a point at the largest coordinate a scene may hold overflows to
+    // infinity, and the veins' sine of it is NaN.
+    constexpr float kMaxScale = std::numeric_limits<float>::max() / kMaxSceneCoordinate;
+    const float scale = node.getFloat({"scale"}, 1.0f, Range{0.0f, kMaxScale, true, false});
     result = TexturedColor(std::make_shared<MarbleTexture>(veins, base, scale, parseMapping(node)));
   } else if (type == "image") {
     const JsonNode fileNode = node[{"filename"}];

@@ -118,6 +118,7 @@ CASES = {
     "texture-missing-image": (mat(type="lambertian", albedo={"type": "image", "filename": "no-such.png"}), "surfaces[0].material.albedo.filename"),
     "texture-corrupt-image": (mat(type="lambertian", albedo={"type": "image", "filename": "corrupt.png"}), "surfaces[0].material.albedo.filename"),
     "checker-scale-zero": (mat(type="lambertian", albedo={"type": "checker", "scale": 0}), "surfaces[0].material.albedo.scale"),
+    "marble-scale-overflow": (mat(type="lambertian", albedo={"type": "marble", "scale": 3e38}), "surfaces[0].material.albedo.scale"),
     "checker-transform-singular": (mat(type="lambertian", albedo={"type": "checker", "transform": {"scale": [1, 0, 1]}}), "surfaces[0].material.albedo.transform"),
     "marble-transform-unknown-key": (mat(type="lambertian", albedo={"type": "marble", "transform": {"rotate": 30}}), "surfaces[0].material.albedo.transform"),
     "dielectric-ior-zero": (mat(type="dielectric", ior=0), "surfaces[0].material.ior"),

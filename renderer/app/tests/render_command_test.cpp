@@ -32,6 +32,28 @@ class RenderCommand : public ::testing::Test {
   std::string scene_;
 };
 
+// A scene the loader warns about renders, with the warning on stderr; --strict refuses it.
+TEST_F(RenderCommand, StrictMakesWarningsErrors) {
+  const std::string warned = (dir_ / "warned.json").string();
+  std::ofstream(warned) << R"({
+      "camera": {"transform": {"from": [0, 0, 4], "at": [0, 0, 0], "up": [0, 1, 0]},
+                 "resolution": [8, 8]},
+      "background": 1,
+      "surfaces": [{"type": "sphere", "material": {"type": "lambertian", "albedo": 1.5}}]})";
+  const std::string out = (dir_ / "warned.exr").string();
+  testing::Outcome r = testing::run({VERITY_BINARY, "render", warned, "--spp", "1", "-o", out});
+  EXPECT_EQ(r.status, 0) << r.stderrText;
+  EXPECT_NE(
+      r.stderrText.find("warning: " + warned + ": surfaces[0].material.albedo: an albedo of 1.5"),
+      std::string::npos)
+      << r.stderrText;
+  std::filesystem::remove(out);
+  r = testing::run({VERITY_BINARY, "render", warned, "--spp", "1", "-o", out, "--strict"});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.stderrText.find("--strict"), std::string::npos) << r.stderrText;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 TEST_F(RenderCommand, WritesWhereAsked) {
   const auto outcome = render({"-o", (dir_ / "image.exr").string()});
   EXPECT_EQ(outcome.status, 0) << outcome.stderrText;

@@ -17,7 +17,8 @@ namespace verity::test {
 // Parses one material object, e.g. R"({"type": "ggx", "ab": 0.3})".
 inline std::shared_ptr<const Material> makeMaterial(const std::string& json) {
   static TextureFactory textures;
-  MaterialFactory factory(textures);
+  std::vector<VerityError> warnings;  // the grids test albedos of 1 and below
+  MaterialFactory factory(textures, warnings);
   return factory.make(JsonNode::parse(json, "test.json"));
 }
 

@@ -87,6 +87,42 @@ TEST(SceneLoader, AMirroringTransformKeepsATrianglesFront) {
   }
 }
 
+// Materials that would invent or lose energy load, with one warning each naming its path: an
+// albedo above 1 (constant or a texture that can reach it), a light emitting nothing.
+TEST(SceneLoader, WarnsOncePerMaterialThatInventsOrLosesEnergy) {
+  SceneFile f = loadSceneText(sceneWith(R"(
+    "materials": [
+      {"name": "bright", "type": "lambertian", "albedo": [0.5, 1.2, 0.5]},
+      {"name": "fine", "type": "lambertian", "albedo": 1},
+      {"name": "dark", "type": "diffuse light", "emit": 0},
+      {"name": "checks", "type": "oren-nayar",
+       "albedo": {"type": "checker", "even": 0.5, "odd": {"type": "marble", "base": [1, 3, 1]}}}],
+    "surfaces": [
+      {"type": "sphere", "material": "bright"}, {"type": "sphere", "material": "bright"},
+      {"type": "sphere", "material": "fine"}, {"type": "quad", "material": "dark"},
+      {"type": "sphere", "material": "checks"},
+      {"type": "sphere", "material": {"type": "ggx", "albedo": 1.01}}])"),
+                              "/tmp/w.json");
+  std::vector<std::string> where;
+  for (const VerityError& w : f.warnings) {
+    EXPECT_EQ(w.file(), "/tmp/w.json");
+    where.push_back(w.jsonPath());
+  }
+  EXPECT_EQ(where,
+            (std::vector<std::string>{"materials[0].albedo", "materials[2]", "materials[3].albedo",
+                                      "surfaces[5].material.albedo"}));
+  EXPECT_NE(f.warnings[0].problem().find("1.2"), std::string::npos);
+  EXPECT_NE(f.warnings[2].problem().find("texture that reaches 3"), std::string::npos);
+}
+
+TEST(SceneLoader, AShippedSceneHasNoWarnings) {
+  for (const char* name : {"cornell-box", "furnace", "textured-box", "veach-mats"})
+    EXPECT_TRUE(loadScene(std::filesystem::path(VERITY_SOURCE_DIR) / "scenes" /
+                          (std::string(name) + ".json"))
+                    .warnings.empty())
+        << name;
+}
+
 TEST(SceneLoader, SurfacesMaterialsAndBackgrounds) {
   const std::string text = sceneWith(R"(
     "accelerator": {"type": "bbh"},
