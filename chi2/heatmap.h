@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "chi2/sampling_test.h"
+#include "chi2/sampling_check.h"
 
 namespace verity::chi2 {
 

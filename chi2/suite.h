@@ -12,7 +12,7 @@
 #include "chi2/bsdf_subject.h"
 #include "chi2/light_subjects.h"
 #include "chi2/microfacet_checks.h"
-#include "chi2/sampling_test.h"
+#include "chi2/sampling_check.h"
 #include "chi2/warp_subjects.h"
 
 namespace verity::chi2::suite {

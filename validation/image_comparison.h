@@ -31,7 +31,7 @@
 #include "validation/kolmogorov_smirnov.h"
 #include "validation/pixel_statistics.h"
 #include "validation/tile_pooling.h"
-#include "validation/welch_test.h"
+#include "validation/welch_t.h"
 
 namespace verity::validation {
 

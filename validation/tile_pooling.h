@@ -15,7 +15,7 @@
 #pragma once
 
 #include "validation/pixel_statistics.h"
-#include "validation/welch_test.h"
+#include "validation/welch_t.h"
 
 namespace verity::validation {
 

@@ -6,7 +6,7 @@
 
 #include "chi2/bsdf_subject.h"
 #include "chi2/microfacet_checks.h"
-#include "chi2/sampling_test.h"
+#include "chi2/sampling_check.h"
 #include "chi2/suite.h"
 #include "reference_ggx.h"
 

@@ -23,7 +23,8 @@
 #include "scene/scene_loader.h"
 #include "validation/batch_regions.h"
 #include "validation/comparison_family.h"
-#include "validation/studies/study_util.h"
+#include "validation/studies/seeds.h"
+#include "validation/studies/timed_render.h"
 
 namespace verity::validation {
 namespace {

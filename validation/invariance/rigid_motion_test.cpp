@@ -20,11 +20,14 @@
 #include <chrono>
 #include <filesystem>
 
+#include "integrators/integrator_registry.h"
 #include "integrators/integrator_settings.h"
 #include "render/renderer.h"
 #include "validation/batch_regions.h"
 #include "validation/comparison_family.h"
-#include "validation/studies/study_util.h"
+#include "validation/studies/seeds.h"
+#include "validation/studies/study_scene.h"
+#include "validation/studies/timed_render.h"
 
 namespace verity::validation {
 namespace {
@@ -37,9 +40,6 @@ constexpr int kMaxBounces = 5;
 constexpr int kBatches = 16;
 constexpr int kBatchSpp = 4;
 constexpr double kFamilyWiseLevel = 0.01;
-
-const char* const kIntegrators[] = {"path_tracer_mats", "path_tracer_nee", "path_tracer_mis",
-                                    "bdpt", "light_tracer"};
 
 // `batches` independent renders of `spp` samples per pixel, as region means.
 BatchRegions renderBatches(const SceneFile& file, const std::string& integrator,
@@ -101,7 +101,7 @@ TEST(RigidMotion, ImagesDoNotChange) {
     std::string names;
     for (const RigidMotion& motion : motions) names += " " + motion.name;
     fmt::print("{}:{}\n", name, names);
-    for (const char* integrator : kIntegrators) {
+    for (const std::string& integrator : radianceIntegrators()) {
       const std::string key = fmt::format("{} {}", name, integrator);
       const BatchRegions original = renderBatches(s.loaded, integrator, s.regionOf, s.tiles,
                                                   kBatches, kBatchSpp, key + " original");

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "film/image_io.h"
+#include "integrators/integrator_registry.h"
 #include "integrators/integrator_settings.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
@@ -25,9 +26,12 @@
 namespace verity::validation {
 namespace {
 
-const std::vector<std::string> kIntegrators = {
-    "normals",      "ao",  "path_tracer_mats", "path_tracer_nee", "path_tracer_mis",
-    "light_tracer", "bdpt"};
+// Every registered integrator, debugging views included.
+const std::vector<std::string> kIntegrators = [] {
+  std::vector<std::string> names;
+  for (const IntegratorType& t : integratorTypes()) names.push_back(t.name);
+  return names;
+}();
 
 std::filesystem::path stressScene(const std::string& name) {
   return std::filesystem::path(VERITY_SOURCE_DIR) / "scenes" / "stress" / (name + ".json");

@@ -7,7 +7,11 @@
 #include "core/error.h"
 #include "core/hash.h"
 #include "film/image_io.h"
-#include "validation/studies/study_util.h"
+#include "validation/studies/machine_info.h"
+#include "validation/studies/relative_error.h"
+#include "validation/studies/seeds.h"
+#include "validation/studies/study_scene.h"
+#include "validation/studies/timed_render.h"
 
 namespace verity::studies {
 

@@ -7,7 +7,8 @@
 #include <fstream>
 
 #include "core/error.h"
-#include "validation/studies/study_util.h"
+#include "validation/studies/json_lines.h"
+#include "validation/studies/machine_info.h"
 #include "validation/studies/summary.h"
 
 namespace verity::studies {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "validation/studies/study_util.h"
+#include "validation/studies/machine_info.h"
 
 namespace verity::studies {
 

@@ -9,6 +9,7 @@
 #include <boost/math/distributions/normal.hpp>
 #include <string>
 
+#include "integrators/integrator_registry.h"
 #include "integrators/integrator_settings.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
@@ -37,7 +38,7 @@ int coverage(const Camera& camera, const Scene& scene, int x, int y) {
   return hits == 4 ? 1 : hits == 0 ? 0 : -1;
 }
 
-class AnalyticSphere : public ::testing::TestWithParam<const char*> {};
+class AnalyticSphere : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(AnalyticSphere, MatchesAlbedoTimesBackground) {
   SceneFile file = loadSceneText(kScene, "/tmp/analytic-sphere.json");
@@ -58,7 +59,7 @@ TEST_P(AnalyticSphere, MatchesAlbedoTimesBackground) {
   // light path lands, so the pooled bound is only slightly optimistic there, and the test
   // of the light tracer's sphere in light_tracer_normalisation_test.cpp uses per-pass sums.)
   const double z = boost::math::quantile(boost::math::normal(), 1 - 0.01 / (2 * 36));
-  const bool seesBackground = std::string(GetParam()) != "light_tracer";
+  const bool seesBackground = !findIntegratorType(GetParam())->splatsOnly;
   for (int region = 0; region <= 1; ++region) {
     Eigen::Array3d sum = Eigen::Array3d::Zero(), var = Eigen::Array3d::Zero();
     double n = 0;
@@ -87,9 +88,7 @@ TEST_P(AnalyticSphere, MatchesAlbedoTimesBackground) {
   EXPECT_EQ(film.invalidSamples(), 0u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Integrators, AnalyticSphere,
-                         ::testing::Values("path_tracer_mats", "path_tracer_nee", "path_tracer_mis",
-                                           "bdpt", "light_tracer"));
+INSTANTIATE_TEST_SUITE_P(Integrators, AnalyticSphere, ::testing::ValuesIn(radianceIntegrators()));
 
 }  // namespace
 }  // namespace verity

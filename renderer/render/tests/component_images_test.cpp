@@ -4,6 +4,7 @@
 // the image's sample count, and the components are bit-identical for any thread count.
 #include <gtest/gtest.h>
 
+#include "integrators/integrator_registry.h"
 #include "integrators/tests/bdpt_test_util.h"
 
 namespace verity {
@@ -59,8 +60,9 @@ TEST(ComponentImages, WeightedStrategiesAddUpToTheBdptImage) {
 }
 
 TEST(ComponentImages, PathLengthsAddUpToTheImage) {
-  for (const char* integrator :
-       {"path_tracer_mats", "path_tracer_nee", "path_tracer_mis", "bdpt", "light_tracer"}) {
+  for (const IntegratorType& type : integratorTypes()) {
+    if (!type.readsMaxBounces) continue;
+    const std::string& integrator = type.name;
     SCOPED_TRACE(integrator);
     expectComponentsAddUp(renderWith(integrator, ComponentLayout::Kind::PathLengths, 5, 0, 4));
   }

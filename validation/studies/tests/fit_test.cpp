@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "validation/studies/study_util.h"
+#include "validation/studies/seeds.h"
 
 namespace verity::studies {
 namespace {

@@ -19,11 +19,11 @@
 
 #include "film/image_io.h"
 #include "validation/studies/convergence.h"
+#include "validation/studies/json_lines.h"
 #include "validation/studies/reference.h"
 #include "validation/studies/report.h"
 #include "validation/studies/speedup.h"
 #include "validation/studies/strategies.h"
-#include "validation/studies/study_util.h"
 #include "validation/studies/summary.h"
 
 namespace verity::studies {

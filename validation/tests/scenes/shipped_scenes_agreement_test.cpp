@@ -25,12 +25,13 @@
 #include <filesystem>
 #include <optional>
 
+#include "integrators/integrator_registry.h"
 #include "integrators/integrator_settings.h"
 #include "render/component_images.h"
 #include "render/renderer.h"
 #include "validation/batch_regions.h"
 #include "validation/comparison_family.h"
-#include "validation/studies/study_util.h"
+#include "validation/studies/study_scene.h"
 
 namespace verity::validation {
 namespace {
@@ -44,6 +45,13 @@ constexpr double kFamilyWiseLevel = 0.01;
 const char* const kIntegrators[] = {"path_tracer_mats", "path_tracer_nee", "path_tracer_mis",
                                     "bdpt", "light_tracer"};
 enum { kMaterials = 0, kNee = 1, kMis = 2, kBdpt = 3, kLightTracer = 4, kCount = 5 };
+
+// A newly registered estimator must join the comparisons: the list above is every one.
+TEST(ShippedScenes, ComparesEveryRegisteredEstimator) {
+  const std::vector<std::string> listed(std::begin(kIntegrators), std::end(kIntegrators));
+  EXPECT_EQ(listed, radianceIntegrators());
+  EXPECT_TRUE(findIntegratorType(kIntegrators[kLightTracer])->splatsOnly);
+}
 // Samples per pixel of a batch. The path tracers find caustics (light through the glass or
 // off the mirror onto a diffuse surface) only when a sampled direction happens to hit the
 // emitter: rare, large values. A t-test needs each batch mean to be nearly normal, which

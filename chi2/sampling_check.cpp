@@ -1,4 +1,4 @@
-#include "chi2/sampling_test.h"
+#include "chi2/sampling_check.h"
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>

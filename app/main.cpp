@@ -4,14 +4,14 @@
 #include <CLI/CLI.hpp>
 #include <new>
 
-#include "app/bench_command.h"
-#include "app/compare_command.h"
-#include "app/reference_command.h"
-#include "app/render_command.h"
-#include "app/report_command.h"
-#include "app/study_command.h"
 #include "chi2/chi2_command.h"
+#include "commands/render_command.h"
 #include "core/error.h"
+#include "validation/compare_command.h"
+#include "validation/studies/bench_command.h"
+#include "validation/studies/reference_command.h"
+#include "validation/studies/report_command.h"
+#include "validation/studies/study_command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Verity: a physically based renderer whose estimators are checked by statistics"};

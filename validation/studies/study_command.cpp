@@ -1,12 +1,12 @@
-#include "app/study_command.h"
+#include "validation/studies/study_command.h"
 
 #include <fmt/format.h>
 
 #include "integrators/integrator_settings.h"
 #include "validation/studies/convergence.h"
+#include "validation/studies/json_lines.h"
 #include "validation/studies/speedup.h"
 #include "validation/studies/strategies.h"
-#include "validation/studies/study_util.h"
 #include "validation/studies/summary.h"
 
 namespace verity {

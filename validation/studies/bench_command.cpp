@@ -1,4 +1,4 @@
-#include "app/bench_command.h"
+#include "validation/studies/bench_command.h"
 
 #include <fmt/format.h>
 #include <sys/resource.h>
@@ -12,7 +12,8 @@
 #include "sampling/independent_sampler.h"
 #include "sampling/warp.h"
 #include "scene/scene_loader.h"
-#include "validation/studies/study_util.h"
+#include "validation/studies/study_scene.h"
+#include "validation/studies/timed_render.h"
 
 namespace verity {
 

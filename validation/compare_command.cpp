@@ -1,4 +1,4 @@
-#include "app/compare_command.h"
+#include "validation/compare_command.h"
 
 #include <fmt/format.h>
 

@@ -1,12 +1,13 @@
-#include "app/render_command.h"
+#include "commands/render_command.h"
 
 #include <fmt/format.h>
 #include <unistd.h>
 
 #include <fstream>
 
-#include "app/component_output.h"
+#include "commands/component_output.h"
 #include "film/image_io.h"
+#include "integrators/integrator_registry.h"
 #include "integrators/integrator_settings.h"
 #include "render/interrupt.h"
 #include "render/renderer.h"
@@ -163,9 +164,7 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--seed", args->seed, "Seed of the render's random numbers");
-  cmd->add_option("--integrator", args->integrator,
-                  "normals, ao, path_tracer_mats, path_tracer_nee, path_tracer_mis, bdpt or "
-                  "light_tracer");
+  cmd->add_option("--integrator", args->integrator, integratorTypeList());
   cmd->add_option("--max-bounces", args->maxBounces,
                   "Maximum scattering events per path (0: emitters seen directly)")
       ->check(CLI::Range(0, kMaxBouncesLimit));

@@ -1,4 +1,4 @@
-#include "app/component_output.h"
+#include "commands/component_output.h"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "film/image_io.h"
+#include "integrators/integrator_registry.h"
 
 namespace verity {
 
@@ -16,11 +17,6 @@ namespace {
 // Above this the component films would crowd out everything else on a workstation.
 constexpr double kMaxBytes = 8.0 * (1 << 30);
 
-bool splitsIntoPathLengths(const std::string& integrator) {
-  return integrator.rfind("path_tracer", 0) == 0 || integrator == "bdpt" ||
-         integrator == "light_tracer";
-}
-
 }  // namespace
 
 std::unique_ptr<ComponentImages> makeComponentImages(const std::string& option,
@@ -28,11 +24,12 @@ std::unique_ptr<ComponentImages> makeComponentImages(const std::string& option,
                                                      const Vector2i& resolution,
                                                      const std::filesystem::path& dir) {
   const bool strategies = option == "--strategies";
-  if (strategies && integrator != "bdpt")
+  const IntegratorType* type = findIntegratorType(integrator);
+  if (strategies && !(type && type->hasStrategies))
     throw VerityError(
         "", option,
         "per-strategy images need --integrator bdpt (the integrator is \"" + integrator + "\")");
-  if (!strategies && !splitsIntoPathLengths(integrator))
+  if (!strategies && !(type && type->readsMaxBounces))
     throw VerityError("", option,
                       "per-path-length images need a path tracer, bdpt or light_tracer (the "
                       "integrator is \"" +

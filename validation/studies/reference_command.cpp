@@ -1,4 +1,4 @@
-#include "app/reference_command.h"
+#include "validation/studies/reference_command.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "app/report_command.h"
+#include "validation/studies/report_command.h"
 
 #include <fmt/format.h>
 

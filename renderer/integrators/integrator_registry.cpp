@@ -1,0 +1,106 @@
+#include "integrators/integrator_registry.h"
+
+#include <algorithm>
+
+#include "integrators/ambient_occlusion.h"
+#include "integrators/bdpt.h"
+#include "integrators/integrator_settings.h"
+#include "integrators/light_tracer.h"
+#include "integrators/normals.h"
+#include "integrators/path_tracer.h"
+
+namespace verity {
+
+namespace {
+
+template <PathTracer::Strategy strategy>
+std::unique_ptr<Integrator> makePathTracer(const IntegratorSettings& s) {
+  return std::make_unique<PathTracer>(strategy, s.maxBounces,
+                                      strategy == PathTracer::Strategy::Mis ? s.misPower : 1);
+}
+
+// One explicit table rather than self-registering objects: the renderer is a static library,
+// and the linker drops an object file nothing references, registration and all.
+std::vector<IntegratorType> makeTable() {
+  std::vector<IntegratorType> t;
+  t.push_back({.name = "normals",
+               .description = "shading normals as colours (a debugging view)",
+               .make = [](const IntegratorSettings&) -> std::unique_ptr<Integrator> {
+                 return std::make_unique<NormalsIntegrator>();
+               }});
+  t.push_back({.name = "ao",
+               .aliases = {"ambient_occlusion"},
+               .description = "ambient occlusion within \"distance\"",
+               .readsAoDistance = true,
+               .make = [](const IntegratorSettings& s) -> std::unique_ptr<Integrator> {
+                 return std::make_unique<AmbientOcclusion>(s.aoDistance);
+               }});
+  t.push_back({.name = "path_tracer_mats",
+               .description = "path tracing by material sampling only (no shadow rays)",
+               .estimatesRadiance = true,
+               .readsMaxBounces = true,
+               .make = makePathTracer<PathTracer::Strategy::Materials>});
+  t.push_back({.name = "path_tracer_nee",
+               .description = "path tracing with next-event estimation",
+               .estimatesRadiance = true,
+               .readsMaxBounces = true,
+               .make = makePathTracer<PathTracer::Strategy::NextEvent>});
+  t.push_back({.name = "path_tracer_mis",
+               .description = "path tracing, material and light samples combined by MIS",
+               .estimatesRadiance = true,
+               .readsMaxBounces = true,
+               .readsMisPower = true,
+               .make = makePathTracer<PathTracer::Strategy::Mis>});
+  t.push_back({.name = "bdpt",
+               .description = "bidirectional path tracing, MIS over every strategy (s, t)",
+               .estimatesRadiance = true,
+               .readsMaxBounces = true,
+               .readsMisPower = true,
+               .hasStrategies = true,
+               .make = [](const IntegratorSettings& s) -> std::unique_ptr<Integrator> {
+                 return std::make_unique<Bdpt>(s.maxBounces, s.misPower, s.bdptDroppedStrategy);
+               }});
+  t.push_back({.name = "light_tracer",
+               .description = "light tracing: light subpaths splatted through the lens",
+               .estimatesRadiance = true,
+               .readsMaxBounces = true,
+               .splatsOnly = true,
+               .make = [](const IntegratorSettings& s) -> std::unique_ptr<Integrator> {
+                 return std::make_unique<LightTracer>(s.maxBounces);
+               }});
+  return t;
+}
+
+}  // namespace
+
+const std::vector<IntegratorType>& integratorTypes() {
+  static const std::vector<IntegratorType> table = makeTable();
+  return table;
+}
+
+const IntegratorType* findIntegratorType(const std::string& name) {
+  std::string spelled = name;
+  std::replace(spelled.begin(), spelled.end(), ' ', '_');
+  for (const IntegratorType& t : integratorTypes())
+    if (t.name == spelled ||
+        std::find(t.aliases.begin(), t.aliases.end(), spelled) != t.aliases.end())
+      return &t;
+  return nullptr;
+}
+
+std::string integratorTypeList() {
+  const auto& types = integratorTypes();
+  std::string list;
+  for (size_t i = 0; i < types.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == types.size() ? " or " : ", ") + types[i].name;
+  return list;
+}
+
+std::vector<std::string> radianceIntegrators() {
+  std::vector<std::string> names;
+  for (const IntegratorType& t : integratorTypes())
+    if (t.estimatesRadiance) names.push_back(t.name);
+  return names;
+}
+
+}  // namespace verity

@@ -1,0 +1,40 @@
+// Every integrator type the renderer knows, in one table: its name and other spellings, what
+// it computes, which settings it reads, and how it is made. The scene loader, the commands'
+// help and errors, and the suites that must cover every estimator all read this table.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "integrators/integrator.h"
+
+namespace verity {
+
+struct IntegratorSettings;
+
+struct IntegratorType {
+  std::string name;                  // canonical, as records and manifests spell it
+  std::vector<std::string> aliases;  // other accepted spellings (spaces read as '_')
+  std::string description;
+  // An estimator of radiance (not a debugging view): the agreement, invariance and
+  // stability suites must cover it.
+  bool estimatesRadiance = false;
+  bool readsMaxBounces = false;  // "max_bounces"; also: it can split its image by path length
+  bool readsMisPower = false;    // "power"
+  bool readsAoDistance = false;  // "distance"
+  bool hasStrategies = false;    // per-(s, t) strategy images (BDPT)
+  // Sees only the pixels a light subpath reaches through the lens (t = 1 splats).
+  bool splatsOnly = false;
+  std::unique_ptr<Integrator> (*make)(const IntegratorSettings&) = nullptr;
+};
+
+const std::vector<IntegratorType>& integratorTypes();
+// The type `name` (any accepted spelling), or nullptr.
+const IntegratorType* findIntegratorType(const std::string& name);
+// The canonical names, for help and errors: "normals, ao, ... or light_tracer".
+std::string integratorTypeList();
+// The canonical names of the radiance estimators, in table order.
+std::vector<std::string> radianceIntegrators();
+
+}  // namespace verity

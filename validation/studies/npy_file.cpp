@@ -1,0 +1,29 @@
+#include "validation/studies/npy_file.h"
+
+#include <fstream>
+
+#include "core/error.h"
+
+namespace verity::studies {
+
+void writeNpy(const std::filesystem::path& file, const std::vector<float>& data, int width,
+              int height) {
+  // NPY format 1.0 (numpy.lib.format): magic, version, little-endian header length, then a
+  // Python dict literal padded with spaces and a newline to a multiple of 64 bytes.
+  std::string header =
+      fmt::format("{{'descr': '<f4', 'fortran_order': False, 'shape': ({}, {}), }}", height, width);
+  const size_t total = 10 + header.size() + 1;
+  header.append((64 - total % 64) % 64, ' ');
+  header.push_back('\n');
+  std::ofstream out(file, std::ios::binary);
+  if (!out) throw VerityError(file.string(), "", "cannot write the file");
+  out.write("\x93NUMPY\x01\x00", 8);
+  const uint16_t length = uint16_t(header.size());
+  const char lengthBytes[2] = {char(length & 0xff), char(length >> 8)};
+  out.write(lengthBytes, 2);
+  out.write(header.data(), std::streamsize(header.size()));
+  out.write(reinterpret_cast<const char*>(data.data()),
+            std::streamsize(data.size() * sizeof(float)));
+}
+
+}  // namespace verity::studies

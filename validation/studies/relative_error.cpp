@@ -1,0 +1,98 @@
+#include "validation/studies/relative_error.h"
+
+#include <cmath>
+
+#include "core/error.h"
+
+namespace verity::studies {
+
+namespace {
+
+const std::vector<float>& plane(const ImageChannels& image, const std::string& name) {
+  const auto it = image.planes.find(name);
+  if (it == image.planes.end())
+    throw VerityError("", "", "the reference has no channel \"" + name + "\"");
+  return it->second;
+}
+
+void checkSize(const Film& film, const ImageChannels& reference) {
+  if (film.width() != reference.width || film.height() != reference.height)
+    throw VerityError("", "",
+                      fmt::format("the image is {}×{} but the reference is {}×{} (use the "
+                                  "reference's resolution, or --resolution)",
+                                  film.width(), film.height(), reference.width, reference.height));
+}
+
+}  // namespace
+
+ErrorStats compareToReference(const Film& film, const ImageChannels& reference) {
+  checkSize(film, reference);
+  const std::vector<float>* ref[3] = {&plane(reference, "R"), &plane(reference, "G"),
+                                      &plane(reference, "B")};
+  ErrorStats s;
+  double sumRel = 0, sumVar = 0, sumRelVar = 0;
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const size_t i = size_t(y) * film.width() + x;
+      const uint32_t n = film.count(x, y);
+      const Color3 mean = film.mean(x, y);
+      const Color3 var = film.sampleVariance(x, y);
+      bool finite = n > 0;
+      for (int c = 0; c < 3; ++c) finite = finite && std::isfinite((*ref[c])[i]);
+      if (!finite) continue;
+      for (int c = 0; c < 3; ++c) {
+        const double r = (*ref[c])[i];
+        const double denominator = r * r + kRelEpsilon;
+        const double d = double(mean[c]) - r;
+        const double varOfMean = double(var[c]) / n;
+        sumRel += d * d / denominator;
+        sumVar += varOfMean;
+        sumRelVar += varOfMean / denominator;
+      }
+      ++s.pixelsUsed;
+    }
+  if (s.pixelsUsed == 0) return s;
+  const double terms = 3.0 * double(s.pixelsUsed);
+  s.relMse = sumRel / terms;
+  s.meanVariance = sumVar / terms;
+  s.relVariance = sumRelVar / terms;
+  return s;
+}
+
+std::vector<float> relativeErrorImage(const Film& film, const ImageChannels& reference) {
+  checkSize(film, reference);
+  const std::vector<float>* ref[3] = {&plane(reference, "R"), &plane(reference, "G"),
+                                      &plane(reference, "B")};
+  std::vector<float> out(size_t(film.width()) * film.height());
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const size_t i = size_t(y) * film.width() + x;
+      const Color3 mean = film.mean(x, y);
+      double sum = 0;
+      for (int c = 0; c < 3; ++c) {
+        const double r = (*ref[c])[i];
+        const double d = double(mean[c]) - r;
+        sum += d * d / (r * r + kRelEpsilon);
+      }
+      out[i] = float(std::sqrt(sum / 3));
+    }
+  return out;
+}
+
+double referenceRelMse(const ImageChannels& reference) {
+  const std::vector<float>& samples = plane(reference, "samples");
+  double sum = 0;
+  size_t terms = 0;
+  for (const char* c : {"R", "G", "B"}) {
+    const std::vector<float>& mean = plane(reference, c);
+    const std::vector<float>& var = plane(reference, std::string("variance.") + c);
+    for (size_t i = 0; i < mean.size(); ++i) {
+      if (!(samples[i] > 0) || !std::isfinite(mean[i]) || !std::isfinite(var[i])) continue;
+      sum += double(var[i]) / samples[i] / (double(mean[i]) * mean[i] + kRelEpsilon);
+      ++terms;
+    }
+  }
+  return terms ? sum / double(terms) : 0;
+}
+
+}  // namespace verity::studies

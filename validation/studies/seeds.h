@@ -1,0 +1,15 @@
+// Seeds keyed by names, so that a run's seed does not depend on the order runs are made in.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace verity::studies {
+
+// A stable hash of a string (64-bit FNV-1a), for seeds keyed by names.
+uint64_t hashString(const std::string& s);
+// The seed of run `run` of `integrator` at budget (`budgetType`, `budget`).
+uint64_t runSeed(const std::string& integrator, const std::string& budgetType, double budget,
+                 int run);
+
+}  // namespace verity::studies

@@ -1,0 +1,33 @@
+// Renders timed by the wall clock and the process's CPU clock, and independent seeded batches.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "film/film.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+
+namespace verity::studies {
+
+struct TimedRender {
+  RenderStats stats;
+  double wallSeconds = 0;  // around render() only: scene loading is not counted
+  double cpuSeconds = 0;   // CPU time of the whole process (all threads) over the same span
+};
+// Renders spp samples per pixel, or, with timeLimit > 0, passes until timeLimit seconds have
+// passed (at least one pass; the last pass may overrun the limit). `components`, if given,
+// records the per-strategy or per-path-length images as well.
+TimedRender timedRender(const SceneFile& file, const Integrator& integrator, Film& film, int spp,
+                        int threads, uint64_t seed, double timeLimit = 0,
+                        ComponentImages* components = nullptr);
+
+// `batches` independent renders of `spp` samples per pixel with `integrator` (max bounces
+// `maxBounces`, the file's when negative), batch i seeded by hashString("<key> batch <i>");
+// each film is handed to `onBatch`. Returns the invalid samples of all batches.
+uint64_t renderBatches(const SceneFile& file, const std::string& integrator, int maxBounces,
+                       int batches, int spp, const std::string& key,
+                       const std::function<void(const Film&)>& onBatch);
+
+}  // namespace verity::studies
