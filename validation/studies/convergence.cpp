@@ -5,6 +5,12 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "film/image_io.h"
+#include "validation/studies/npy_file.h"
+#include "validation/studies/relative_error.h"
+#include "validation/studies/seeds.h"
+#include "validation/studies/study_scene.h"
+#include "validation/studies/timed_render.h"
 
 namespace verity::studies {
 

@@ -1,5 +1,7 @@
 #include "validation/studies/npy_file.h"
 
+#include <fmt/format.h>
+
 #include <fstream>
 
 #include "core/error.h"

@@ -1,5 +1,7 @@
 #include "validation/studies/relative_error.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include "core/error.h"

@@ -5,6 +5,9 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "validation/studies/seeds.h"
+#include "validation/studies/study_scene.h"
+#include "validation/studies/timed_render.h"
 
 namespace verity::studies {
 

@@ -5,7 +5,11 @@
 #include <cmath>
 #include <optional>
 
+#include "film/image_io.h"
 #include "render/component_images.h"
+#include "validation/studies/seeds.h"
+#include "validation/studies/study_scene.h"
+#include "validation/studies/timed_render.h"
 
 namespace verity::studies {
 

@@ -1,6 +1,8 @@
 #include "validation/studies/study_records.h"
 
 #include "core/error.h"
+#include "validation/studies/json_lines.h"
+#include "validation/studies/study_scene.h"
 
 namespace verity::studies {
 

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "integrators/integrator_settings.h"
+#include "scene/scene_loader.h"
 #include "validation/studies/machine_info.h"
 
 namespace verity::studies {

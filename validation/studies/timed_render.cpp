@@ -1,7 +1,13 @@
 #include "validation/studies/timed_render.h"
 
+#include <fmt/format.h>
+
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <ctime>
+#include <mutex>
+#include <thread>
 
 #include "validation/studies/seeds.h"
 #include "validation/studies/study_scene.h"
