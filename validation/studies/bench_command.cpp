@@ -5,13 +5,19 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
+#include <numeric>
 
+#include "core/error.h"
+#include "film/image_io.h"
 #include "integrators/integrator_settings.h"
 #include "render/renderer.h"
 #include "sampling/independent_sampler.h"
 #include "sampling/warp.h"
 #include "scene/scene_loader.h"
+#include "validation/studies/relative_error.h"
+#include "validation/studies/seeds.h"
 #include "validation/studies/study_scene.h"
 #include "validation/studies/timed_render.h"
 
@@ -24,7 +30,10 @@ struct BenchArgs {
   int spp = 8;
   int resolution = 0;
   int repeats = 3;
-  bool bdpt = false;    // time BDPT against the path tracer instead
+  bool bdpt = false;      // time BDPT against the path tracer instead
+  std::string reference;  // efficiency against this image instead
+  std::vector<std::string> integrators = {"path_tracer_nee", "path_tracer_mis", "bdpt"};
+  int threads = 0;
   int maxBounces = -1;  // -1: the scene's
 };
 
@@ -136,7 +145,10 @@ int runBdpt(const SceneFile& file, const BenchArgs& args) {
   fmt::print(
       "bdpt, 1 thread:            {:8.3f} µs/sample  ({:.3f} Msamples/s, {:.2f} rays/sample)\n",
       1e6 * median(bdptOne), 1e-6 / median(bdptOne), bdptRays);
-  fmt::print("bdpt / path_tracer_nee time per sample: {:.2f}x  (target <= 2x)\n", median(ratio));
+  // Time per sample is no yardstick across integrators (BDPT spends more per sample to lose
+  // less variance): `--reference` measures efficiency instead.
+  fmt::print("bdpt / path_tracer_nee time per sample: {:.2f}x  (compare efficiency: --reference)\n",
+             median(ratio));
   // What the rays alone cost bounds the ratio from below, however fast the rest becomes.
   const double ptRayShare = median(ptRayTime) / median(ptOne);
   const double bdptRayShare = median(bdptRayTime) / median(bdptOne);
@@ -154,10 +166,71 @@ int runBdpt(const SceneFile& file, const BenchArgs& args) {
   return 0;
 }
 
+// Efficiency 1 / (relMSE · seconds) of each integrator against a reference image (Veach 1997,
+// section 2.4): the yardstick that weighs time per sample against variance per sample. Each
+// repeat renders every integrator once with its own seed, alternating, so that load changes
+// hit all alike; relMSE is the mean over repeats (unbiased for its expectation), seconds the
+// median.
+int runEfficiency(const SceneFile& file, const BenchArgs& args) {
+  const ImageChannels reference = readExr(args.reference);
+  const Vector2i resolution = file.scene->camera().resolution();
+  if (reference.width != resolution.x() || reference.height != resolution.y())
+    throw VerityError(args.reference, "",
+                      fmt::format("the reference is {}×{}, the render {}×{}: pass --resolution {}",
+                                  reference.width, reference.height, resolution.x(), resolution.y(),
+                                  reference.width));
+  struct Measured {
+    IntegratorSettings settings;
+    std::unique_ptr<Integrator> integrator;
+    std::vector<double> seconds, relMse;
+  };
+  std::vector<Measured> measured;
+  for (const std::string& name : args.integrators) {
+    Measured m;
+    m.settings = studies::studyIntegrator(file, name, args.maxBounces);
+    m.integrator = makeIntegrator(m.settings);
+    measured.push_back(std::move(m));
+  }
+  const double referenceRelMse = studies::referenceRelMse(reference);
+  fmt::print("scene {}: {}×{}, {} spp, {} threads, against {} (its own relMSE {:.3g})\n", file.name,
+             resolution.x(), resolution.y(), args.spp, args.threads, args.reference,
+             referenceRelMse);
+  for (int r = 0; r < args.repeats; ++r)
+    for (Measured& m : measured) {
+      Film film(resolution);
+      const uint64_t seed = studies::runSeed(m.settings.type, "bench", args.spp, r);
+      const studies::TimedRender t =
+          studies::timedRender(file, *m.integrator, film, args.spp, args.threads, seed);
+      m.seconds.push_back(t.wallSeconds);
+      m.relMse.push_back(studies::compareToReference(film, reference).relMse);
+    }
+  std::vector<double> relMse, efficiency;
+  for (const Measured& m : measured) {
+    relMse.push_back(std::accumulate(m.relMse.begin(), m.relMse.end(), 0.0) /
+                     double(m.relMse.size()));
+    efficiency.push_back(1 / (relMse.back() * median(m.seconds)));
+  }
+  const double best = *std::max_element(efficiency.begin(), efficiency.end());
+  for (size_t i = 0; i < measured.size(); ++i)
+    fmt::print("{:<18} {:8.3f} s  relMSE {:.4g}  efficiency {:10.4g}  ({:.2f}x the best)\n",
+               measured[i].settings.type, median(measured[i].seconds), relMse[i], efficiency[i],
+               efficiency[i] / best);
+  fmt::print("seconds: medians of {} alternating repeats; relMSE: their mean (epsilon {})\n",
+             args.repeats, studies::kRelEpsilon);
+  if (referenceRelMse > 0.1 * *std::min_element(relMse.begin(), relMse.end()))
+    fmt::print(
+        "warning: the reference's own error is over a tenth of the runs' error; "
+        "efficiencies are biased low\n");
+  return 0;
+}
+
 int run(const BenchArgs& args) {
   // The camera's own resolution changes (aspect kept), so the image is the whole picture
   // and splats land where they belong.
   SceneFile file = studies::loadStudyScene(args.scene, args.resolution);
+  if (!args.reference.empty() && args.bdpt)
+    throw VerityError("", "--reference", "--reference and --bdpt are separate measurements");
+  if (!args.reference.empty()) return runEfficiency(file, args);
   if (args.bdpt) return runBdpt(file, args);
   IntegratorSettings settings = studies::studyIntegrator(file, "path_tracer_nee", args.maxBounces);
   const auto integrator = makeIntegrator(settings);
@@ -210,6 +283,14 @@ void addBenchCommand(CLI::App& app) {
                 "Time bdpt against path_tracer_nee per sample, and bdpt's 2-thread speedup");
   cmd->add_option("--repeats", args->repeats, "Alternating repeats (medians are reported)")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--reference", args->reference,
+                  "Reference image (.exr): print each integrator's efficiency 1 / (relMSE · s)");
+  cmd->add_option("--integrators", args->integrators,
+                  "Integrators compared with --reference (comma-separated)")
+      ->delimiter(',');
+  cmd->add_option("--threads", args->threads,
+                  "Threads of the --reference renders (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
   cmd->callback([args] { throw CLI::RuntimeError(run(*args)); });
 }
 

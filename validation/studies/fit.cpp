@@ -42,6 +42,9 @@ LineFit fitLine(const std::vector<double>& x, const std::vector<double>& y, doub
   fit.slopeStdError = std::sqrt(s2 / sxx);
   const boost::math::students_t t(dof);
   const double q = boost::math::quantile(t, 0.5 + confidence / 2);
+  fit.meanX = meanX;
+  fit.sxx = sxx;
+  fit.tQuantile = q;
   fit.slopeLow = fit.slope - q * fit.slopeStdError;
   fit.slopeHigh = fit.slope + q * fit.slopeStdError;
   return fit;
@@ -55,6 +58,26 @@ LineFit fitLogLog(const std::vector<double>& x, const std::vector<double>& y, do
       ly.push_back(std::log(y[i]));
     }
   return fitLine(lx, ly, confidence);
+}
+
+Crossing crossing(const LineFit& fit, double y) {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  Crossing c{nan, nan, nan, false};
+  if (!std::isfinite(fit.slope) || fit.slope == 0) return c;
+  c.x = (y - fit.intercept) / fit.slope;
+  if (!std::isfinite(fit.slopeStdError) || !(fit.sxx > 0)) return c;
+  // With d = x − x̄ and e = y − ŷ(x̄), the band's edges solve
+  // (slope² − t²s²/Sxx) d² − 2·slope·e·d + (e² − t²s²/n) = 0.
+  const double ts2 = fit.tQuantile * fit.tQuantile * fit.residualStd * fit.residualStd;
+  const double e = y - (fit.intercept + fit.slope * fit.meanX);
+  const double a = fit.slope * fit.slope - ts2 / fit.sxx;
+  if (!(a > 0)) return c;  // the slope is not significant: the interval is unbounded
+  const double b = fit.slope * e;
+  const double root = std::sqrt(std::max(0.0, b * b - a * (e * e - ts2 / fit.n)));
+  c.low = fit.meanX + (b - root) / a;
+  c.high = fit.meanX + (b + root) / a;
+  c.bounded = true;
+  return c;
 }
 
 double median(std::vector<double> v) {

@@ -11,8 +11,23 @@ struct LineFit {
   double slopeStdError = 0;            // NaN below three points
   double slopeLow = 0, slopeHigh = 0;  // two-sided confidence interval of the slope
   double confidence = 0.95;
-  double residualStd = 0;  // standard deviation of the residuals (n − 2 degrees of freedom)
+  double residualStd = 0;     // standard deviation of the residuals (n − 2 degrees of freedom)
+  double meanX = 0, sxx = 0;  // x̄ and Σ (xᵢ − x̄)², for intervals at other x
+  double tQuantile = 0;       // the Student-t quantile of the intervals
 };
+
+// Where the fitted line reaches y: the point estimate x₀ = (y − intercept) / slope and the
+// inverse-prediction (calibration) interval of the x at which the line's MEAN is y: the x
+// whose confidence band of the mean, ŷ(x) ± t·s·√(1/n + (x − x̄)²/Sxx), contains y (Fieller's
+// theorem; Draper & Smith, "Applied Regression Analysis", 3rd ed., section 3.2, "Inverse
+// regression (the calibration problem)"). The interval is bounded only when the slope
+// differs from 0 at the fit's confidence (g = (t·se/slope)² < 1); otherwise it is unbounded and
+// `bounded` is false.
+struct Crossing {
+  double x = 0, low = 0, high = 0;
+  bool bounded = false;
+};
+Crossing crossing(const LineFit& fit, double y);
 
 // Ordinary least squares of y on x (Eigen's Householder QR). The slope's standard error is
 // s / sqrt(Σ (xᵢ − x̄)²) with s² = Σ residual² / (n − 2), and its interval is slope ± t·se with t

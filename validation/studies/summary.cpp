@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <tuple>
 
@@ -37,6 +39,52 @@ double mean(const std::vector<double>& v) {
   return v.empty() ? 0 : sum / double(v.size());
 }
 
+// The standard error of the mean of v (NaN below two values).
+double standardError(const std::vector<double>& v) {
+  if (v.size() < 2) return std::numeric_limits<double>::quiet_NaN();
+  const double m = mean(v);
+  double ss = 0;
+  for (double x : v) ss += (x - m) * (x - m);
+  return std::sqrt(ss / double(v.size() - 1) / double(v.size()));
+}
+
+nlohmann::json number(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+}
+
+// The wall time at which the line fitted to log mean relMSE against log mean wall time reaches
+// `target`, with its inverse-prediction interval (fit.h). "reached" only where the target lies
+// among the means measured: outside them the line is an extrapolation, and the report says
+// "not reached" (below every mean) or "before the smallest budget" (above every mean).
+nlohmann::json timeToAccuracy(const LineFit& fit, const std::vector<double>& meanErr,
+                              double target) {
+  nlohmann::json out = {{"target_rel_mse", target}};
+  const auto [lo, hi] = std::minmax_element(meanErr.begin(), meanErr.end());
+  if (fit.n < 3 || meanErr.empty() || !std::isfinite(fit.slope)) {
+    out["status"] = "no fit";
+    return out;
+  }
+  const Crossing c = crossing(fit, std::log(target));
+  out["seconds"] = number(std::exp(c.x));
+  if (c.bounded) {
+    out["seconds_low"] = number(std::exp(c.low));
+    out["seconds_high"] = number(std::exp(c.high));
+  }
+  out["status"] = target < *lo   ? "not reached"
+                  : target > *hi ? "before the smallest budget"
+                  : !c.bounded   ? "slope not significant"
+                                 : "reached";
+  return out;
+}
+
+std::string accuracyText(const nlohmann::json& a) {
+  const std::string status = a["status"].get<std::string>();
+  if (status == "reached")
+    return fmt::format("{:.3g} s [{:.3g}, {:.3g}]", a["seconds"].get<double>(),
+                       a["seconds_low"].get<double>(), a["seconds_high"].get<double>());
+  return status;
+}
+
 }  // namespace
 
 nlohmann::json summarize(const std::vector<nlohmann::json>& records, double confidence) {
@@ -59,11 +107,12 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
     }
   }
 
-  nlohmann::json out = {{"convergence", nlohmann::json::array()},
-                        {"best", nlohmann::json::array()},
-                        {"speedup", nlohmann::json::array()},
-                        {"strategies", nlohmann::json::array()},
-                        {"confidence", confidence}};
+  nlohmann::json out = {
+      {"convergence", nlohmann::json::array()}, {"best", nlohmann::json::array()},
+      {"speedup", nlohmann::json::array()},     {"strategies", nlohmann::json::array()},
+      {"equal_time", nlohmann::json::array()},  {"confidence", confidence}};
+  // (scene, w, h, threads, seconds) -> integrator -> that budget's summary
+  std::map<std::tuple<std::string, int, int, int, double>, nlohmann::json> equalTime;
   // (scene, w, h, budget type, threads) -> integrator -> efficiency
   std::map<std::tuple<std::string, int, int, std::string, int>, std::map<std::string, double>>
       efficiencies;
@@ -78,7 +127,7 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
       byBudget[r->value("budget", 0.0)].push_back(r);
     }
     nlohmann::json budgets = nlohmann::json::array();
-    std::vector<double> meanSpp, meanErr;
+    std::vector<double> meanSpp, meanErr, meanTime;
     for (const auto& [budget, rs] : byBudget) {
       std::vector<double> e, t, c, s, eff, var;
       for (const nlohmann::json* r : rs) {
@@ -91,8 +140,13 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
       }
       meanSpp.push_back(mean(s));
       meanErr.push_back(mean(e));
+      meanTime.push_back(mean(t));
       budgets.push_back({{"budget", budget},
                          {"mean_rel_mse", mean(e)},
+                         {"rel_mse_std_error", number(standardError(e))},
+                         {"mean_wall_seconds", mean(t)},
+                         {"wall_seconds_std_error", number(standardError(t))},
+                         {"mean_spp", mean(s)},
                          {"runs", rs.size()},
                          {"median_rel_mse", median(e)},
                          {"median_rel_variance", median(var)},
@@ -103,8 +157,20 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
     }
     const double efficiency = budgets.back()["median_efficiency"].get<double>();
     // With one budget, the spread of times is noise, not cost: no slope.
-    if (byBudget.size() < 2) time.clear(), spp.clear(), err.clear(), meanSpp.clear();
+    if (byBudget.size() < 2)
+      time.clear(), spp.clear(), err.clear(), meanSpp.clear(), meanTime.clear();
+    const LineFit timeOfMeans = fitLogLog(meanTime, meanErr, confidence);
+    nlohmann::json accuracy = nlohmann::json::array();
+    for (double target : kAccuracyTargets)
+      accuracy.push_back(timeToAccuracy(timeOfMeans, meanErr, target));
     efficiencies[{scene, w, h, budgetType, threads}][integrator] = efficiency;
+    if (budgetType == "time")
+      for (const nlohmann::json& b : budgets)
+        equalTime[{scene, w, h, threads, b["budget"].get<double>()}][integrator] = {
+            {"mean_rel_mse", b["mean_rel_mse"]},
+            {"rel_mse_std_error", b["rel_mse_std_error"]},
+            {"mean_spp", b["mean_spp"]},
+            {"runs", b["runs"]}};
     const nlohmann::json* first = runs.front();
     out["convergence"].push_back(
         {{"scene", scene},
@@ -120,6 +186,8 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
          {"fit_time", fitJson(fitLogLog(time, err, confidence))},
          {"fit_spp", fitJson(fitLogLog(spp, err, confidence))},
          {"fit_spp_of_means", fitJson(fitLogLog(meanSpp, meanErr, confidence))},
+         {"fit_time_of_means", fitJson(timeOfMeans)},
+         {"time_to_accuracy", accuracy},
          {"efficiency", efficiency},
          {"budgets", budgets}});
   }
@@ -139,6 +207,15 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
                            {"integrator", best},
                            {"efficiency", bestEff},
                            {"times_better_than", ratios}});
+  }
+  for (const auto& [key, byIntegrator] : equalTime) {
+    const auto& [scene, w, h, threads, seconds] = key;
+    out["equal_time"].push_back({{"scene", scene},
+                                 {"width", w},
+                                 {"height", h},
+                                 {"threads", threads},
+                                 {"seconds", seconds},
+                                 {"integrators", byIntegrator}});
   }
   for (const auto& [key, byThreads] : speed) {
     const auto& [scene, w, h, integrator, maxBounces, spp] = key;
@@ -209,6 +286,29 @@ std::string summaryText(const nlohmann::json& summary) {
                        g["scene"].get<std::string>(), g["integrator"].get<std::string>(),
                        g["threads"].get<int>(), g["runs"].get<size_t>(), fmtFit(g["fit_time"]),
                        fmtFit(g["fit_spp"]), g["efficiency"].get<double>());
+  }
+  bool accuracyHeader = false;
+  for (const nlohmann::json& g : summary["convergence"]) {
+    if (!g.contains("time_to_accuracy")) continue;
+    if (!accuracyHeader) {
+      s += fmt::format("Time to accuracy (wall seconds to reach the relative MSE, {}% interval)\n",
+                       int(std::lround(100 * summary["confidence"].get<double>())));
+      accuracyHeader = true;
+    }
+    std::string cells;
+    for (const nlohmann::json& a : g["time_to_accuracy"])
+      cells += fmt::format("  {:g}: {}", a["target_rel_mse"].get<double>(), accuracyText(a));
+    s += fmt::format("{:<18} {:<16} {:>2} threads {}\n", g["scene"].get<std::string>(),
+                     g["integrator"].get<std::string>(), g["threads"].get<int>(), cells);
+  }
+  for (const nlohmann::json& e : summary.value("equal_time", nlohmann::json::array())) {
+    std::string cells;
+    for (const auto& [name, v] : e["integrators"].items())
+      cells += fmt::format("{}{} {:.4g}", cells.empty() ? "" : ", ", name,
+                           v["mean_rel_mse"].get<double>());
+    s += fmt::format("equal time on {} ({} threads, {:g} s): relMSE {}\n",
+                     e["scene"].get<std::string>(), e["threads"].get<int>(),
+                     e["seconds"].get<double>(), cells);
   }
   for (const nlohmann::json& b : summary["best"]) {
     s += fmt::format("most efficient on {} ({} threads, {} budgets): {}",

@@ -25,6 +25,12 @@ namespace verity::studies {
 // "strategies" records (one BDPT render each) give, per render, the strategies ranked by
 // their share of the image and the fewest of them that carry kCarriedShare of it.
 inline constexpr double kCarriedShare = 0.9;
+// "time_to_accuracy" of a convergence group: the wall time at which its relative MSE reaches
+// each target, from the line fitted to log mean relMSE against log mean wall time over the
+// budgets (the mean over runs is unbiased for E[relMSE]), with the inverse-prediction
+// interval of that time at the summary's confidence. "equal_time": per (scene, resolution,
+// threads, time budget), every integrator's mean relMSE and its standard error.
+inline constexpr double kAccuracyTargets[] = {1e-2, 1e-3};
 nlohmann::json summarize(const std::vector<nlohmann::json>& records, double confidence = 0.95);
 
 // The summary as text tables (what `verity study` prints and the Markdown report shows).
