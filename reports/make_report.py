@@ -60,6 +60,70 @@ def scenes_of(records, study):
     return sorted({r["scene"] for r in records if r.get("study") == study})
 
 
+def standard_error(values):
+    """The standard error of the mean (0 for fewer than two values)."""
+    if len(values) < 2:
+        return 0.0
+    return float(np.std(values, ddof=1) / math.sqrt(len(values)))
+
+
+def fmt_seconds(a):
+    """A time-to-accuracy entry of summary.json as table text."""
+    if a["status"] == "reached":
+        return f"{a['seconds']:.3g} s [{a['seconds_low']:.3g}, {a['seconds_high']:.3g}]"
+    if a["status"] == "not reached" and a.get("seconds") is not None:
+        return f"not reached (line: {a['seconds']:.3g} s)"
+    return a["status"]
+
+
+def accuracy_table(summary):
+    """The table the report opens with: wall time to each relative MSE target."""
+    conv = [g for g in summary.get("convergence", []) if g.get("time_to_accuracy")]
+    if not conv:
+        return None
+    conf = int(round(100 * summary.get("confidence", 0.95)))
+    targets = [a["target_rel_mse"] for a in conv[0]["time_to_accuracy"]]
+    rows = []
+    for g in sorted(conv, key=lambda g: (g["scene"], g["threads"], g["integrator"])):
+        rows.append([g["scene"], f"{g['width']}×{g['height']}", g["integrator"], g["threads"],
+                     g["runs"], len(g["budgets"])]
+                    + [fmt_seconds(a) for a in g["time_to_accuracy"]])
+    header = ["scene", "size", "integrator", "threads", "runs", "budgets"] + [
+        f"time to relMSE {t:g} [{conf}% CI]" for t in targets]
+    note = (f"Wall seconds at which the line fitted to log mean relMSE against log mean wall "
+            f"time (one point per budget, the mean over its runs) reaches the target; the "
+            f"interval is the inverse-prediction (calibration) interval of that time at {conf}% "
+            f"(Draper & Smith, section 3.2). \"not reached\": the target lies below every "
+            f"mean measured, so the line would be extrapolated (its value is shown); \"before "
+            f"the smallest budget\": every budget already reached it.")
+    return ("Time to accuracy", header, rows, note)
+
+
+def equal_time_table(summary):
+    """Every integrator's relative MSE at the same wall-clock budget."""
+    entries = summary.get("equal_time", [])
+    if not entries:
+        return None
+    names = sorted({n for e in entries for n in e["integrators"]})
+    rows = []
+    for e in entries:
+        cells = []
+        for n in names:
+            v = e["integrators"].get(n)
+            if v is None:
+                cells.append("—")
+                continue
+            se = v.get("rel_mse_std_error")
+            cells.append(f"{v['mean_rel_mse']:.3g} ± {se:.2g}" if se is not None
+                         else f"{v['mean_rel_mse']:.3g}")
+        best = min(e["integrators"].items(), key=lambda kv: kv[1]["mean_rel_mse"])[0]
+        rows.append([e["scene"], e["threads"], f"{e['seconds']:g} s"] + cells + [best])
+    return ("Equal time", ["scene", "threads", "budget"] + [f"relMSE {n}" for n in names]
+            + ["lowest"], rows,
+            "Mean relative MSE over the runs at each time budget ± its standard error; the "
+            "same seconds for every integrator.")
+
+
 def plot_error(conv, out_dir, x_key, x_label, file_name, fits):
     """One panel per (scene, integrator); one curve per thread count."""
     panels = sorted({(r["scene"], r["integrator"]) for r in conv})
@@ -83,15 +147,19 @@ def plot_error(conv, out_dir, x_key, x_label, file_name, fits):
             by_budget = collections.defaultdict(list)
             for r in rs:
                 by_budget[r["budget"]].append(r)
-            mx = [np.median([r[x_key] for r in v]) for _, v in sorted(by_budget.items())]
-            my = [np.median([r["rel_mse"] for r in v]) for _, v in sorted(by_budget.items())]
+            groups = [v for _, v in sorted(by_budget.items())]
+            mx = [np.mean([r[x_key] for r in v]) for v in groups]
+            my = [np.mean([r["rel_mse"] for r in v]) for v in groups]
+            sx = [standard_error([r[x_key] for r in v]) for v in groups]
+            sy = [standard_error([r["rel_mse"] for r in v]) for v in groups]
             fit = fits.get((scene, integ, threads, kind))
             label = f"{threads} thread{'s' if threads != 1 else ''}"
             if len(kinds) > 1:
                 label += f" ({'spp' if kind == 'spp' else 'time'} budgets)"
             if fit and fit.get("slope") is not None:
                 label += f", slope {fmt_fit(fit)}"
-            ax.plot(mx, my, "-o", color=color, ms=3, label=label)
+            ax.errorbar(mx, my, xerr=sx, yerr=sy, fmt="-o", color=color, ms=3, capsize=2,
+                        lw=1, label=label)
         # A slope −1 guide through the first curve's smallest budget.
         if runs:
             x0 = min(r[x_key] for r in runs if r[x_key] > 0)
@@ -221,6 +289,9 @@ def plot_error_images(conv, out_dir):
 def tables(summary):
     """Returns a list of (title, header, rows, note) tables."""
     out = []
+    equal = equal_time_table(summary)
+    if equal:
+        out.append(equal)
     conf = int(round(100 * summary.get("confidence", 0.95)))
     conv = summary.get("convergence", [])
     if conv:
@@ -312,6 +383,32 @@ def findings(summary, records):
     """Sentences with the numbers the report is asked for, per scene."""
     conv = [r for r in records if r.get("study") == "convergence"]
     lines = []
+    groups = [g for g in summary.get("convergence", []) if g.get("time_to_accuracy")]
+    for scene, threads in sorted({(g["scene"], g["threads"]) for g in groups}):
+        gs = [g for g in groups if g["scene"] == scene and g["threads"] == threads]
+        for i, target in enumerate(a["target_rel_mse"] for a in gs[0]["time_to_accuracy"]):
+            reached = sorted((g["time_to_accuracy"][i]["seconds"], g["integrator"]) for g in gs
+                             if g["time_to_accuracy"][i]["status"] == "reached")
+            if not reached:
+                continue
+            (t, best), rest = reached[0], reached[1:]
+            a = next(g for g in gs if g["integrator"] == best)["time_to_accuracy"][i]
+            text = (f"- **{scene}, relMSE {target:g}** ({threads} thread"
+                    f"{'s' if threads != 1 else ''}): **{best}** reaches it in {t:.3g} s "
+                    f"[{a['seconds_low']:.3g}, {a['seconds_high']:.3g}]")
+            def versus(u, n):
+                other = next(g for g in gs if g["integrator"] == n)["time_to_accuracy"][i]
+                tie = other["seconds_low"] <= a["seconds_high"]
+                return (f"{u / t:.1f}× faster than {n} ({u:.3g} s"
+                        f"{'; the intervals overlap' if tie else ''})")
+
+            if rest:
+                text += ", " + ", ".join(versus(u, n) for u, n in rest)
+            missing = [g["integrator"] for g in gs
+                       if g["time_to_accuracy"][i]["status"] == "not reached"]
+            if missing:
+                text += f"; {', '.join(missing)} did not reach it in the budgets measured"
+            lines.append(text + ".")
     for b in summary.get("best", []):
         ratios = sorted((v, k) for k, v in b["times_better_than"].items() if k != b["integrator"])
         if ratios:
@@ -417,7 +514,8 @@ def main():
     f = plot_error(conv, args.out, "wall_seconds", "wall time (s)", "error_vs_time.png", fits_time)
     if f:
         figures.append((f, "Relative MSE against wall time (log-log), one panel per integrator, "
-                           "one curve per thread count; dots are runs, lines join medians."))
+                           "one curve per thread count; dots are runs, points are means over the runs "
+                           "at each budget with their standard errors."))
     f = plot_error(conv, args.out, "spp", "samples per pixel", "error_vs_spp.png", fits_spp)
     if f:
         figures.append((f, "Relative MSE against samples per pixel (log-log)."))
@@ -442,7 +540,11 @@ def main():
     meta_runs = f"Runs were made on {', '.join(hosts)} at revision(s) {', '.join(revs)}."
 
     tbls = tables(summary)
+    accuracy = accuracy_table(summary)
     md = ["# Verity study report", "", meta, "", meta_runs, ""]
+    if accuracy:
+        title, header, rows, note = accuracy
+        md += [f"## {title}", "", markdown_table(header, rows), "", note, ""]
     found = findings(summary, records)
     if found:
         md += ["## Findings", ""] + found + [""]
@@ -463,6 +565,10 @@ def main():
     parts = [f"<!doctype html><html><head><meta charset='utf-8'><title>Verity study report"
              f"</title><style>{css}</style></head><body><h1>Verity study report</h1>",
              f"<p>{html.escape(meta)}</p><p>{html.escape(meta_runs)}</p>"]
+    if accuracy:
+        title, header, rows, note = accuracy
+        parts.append(f"<h2>{html.escape(title)}</h2>" + html_table(header, rows)
+                     + f"<p>{html.escape(note)}</p>")
     if found:
         parts.append("<h2>Findings</h2><ul>" + "".join(
             f"<li>{html.escape(f[2:]).replace('**', '')}</li>" for f in found) + "</ul>")
