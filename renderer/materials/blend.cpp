@@ -1,5 +1,6 @@
 #include "materials/blend.h"
 
+#include "materials/material_factory.h"
 #include "materials/sample_util.h"
 
 namespace verity {
@@ -46,6 +47,20 @@ std::optional<BsdfSample> Blend::sample(const TextureQuery& q, const Vector3f& w
 Color3 Blend::emitted(const TextureQuery& q, const Vector3f& w) const {
   const float t = amount(q);
   return (1 - t) * a_->emitted(q, w) + t * b_->emitted(q, w);
+}
+
+MaterialType blendType() {
+  return {"blend",
+          {},
+          "(1 - amount)·a + amount·b; a, b (materials or names), amount (0.5)",
+          [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
+            auto a = f.reference(node[{"a"}]);
+            auto b = f.reference(node[{"b"}]);
+            TexturedColor amount = f.textures().parse(node, {"amount"}, Color3::Constant(0.5f));
+            if (amount.isConstant() && !(amount.constant() <= 1).all())
+              node[{"amount"}].fail("the blend amount must lie in [0, 1]");
+            return std::make_shared<Blend>(std::move(a), std::move(b), std::move(amount));
+          }};
 }
 
 }  // namespace verity

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "materials/material.h"
+#include "materials/material_type.h"
 
 namespace verity {
 
@@ -32,5 +33,8 @@ class Blend : public Material {
   std::shared_ptr<const Material> a_, b_;
   TexturedColor amount_;
 };
+
+// "blend" in the scene format (material_registry.h).
+MaterialType blendType();
 
 }  // namespace verity

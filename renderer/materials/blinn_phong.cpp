@@ -1,6 +1,7 @@
 #include "materials/blinn_phong.h"
 
 #include "materials/fresnel.h"
+#include "materials/material_factory.h"
 #include "materials/sample_util.h"
 #include "sampling/warp.h"
 
@@ -32,6 +33,17 @@ std::optional<BsdfSample> BlinnPhong::sample(const TextureQuery& q, const Vector
   const Vector3f wo = reflect(wi, h).normalized();
   if (wo.z() <= 0) return std::nullopt;
   return makeSample(wo, eval(q, wi, wo, mode), pdf(q, wi, wo), kReflection | kGlossy);
+}
+
+MaterialType blinnPhongType() {
+  return {"blinnphong",
+          {"blinn_phong", "blinn-phong"},
+          "normalised Blinn-Phong lobe; albedo (0.8), exponent (10)",
+          [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
+            TexturedColor albedo = f.parseAlbedo(node);
+            const float exponent = node.getFloat({"exponent"}, 10.0f, Range{0.0f, 1e6f});
+            return std::make_shared<BlinnPhong>(std::move(albedo), exponent);
+          }};
 }
 
 }  // namespace verity

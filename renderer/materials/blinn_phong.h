@@ -6,6 +6,7 @@
 #pragma once
 
 #include "materials/material.h"
+#include "materials/material_type.h"
 
 namespace verity {
 
@@ -26,5 +27,8 @@ class BlinnPhong : public Material {
   TexturedColor albedo_;
   float exponent_;
 };
+
+// "blinnphong" in the scene format (material_registry.h).
+MaterialType blinnPhongType();
 
 }  // namespace verity

@@ -1,6 +1,7 @@
 #include "materials/dielectric.h"
 
 #include "materials/fresnel.h"
+#include "materials/material_factory.h"
 
 namespace verity {
 
@@ -28,6 +29,15 @@ std::optional<BsdfSample> sampleSmoothDielectric(const Vector3f& wi, float eta, 
   s.lobe = kTransmission | kSpecular;
   s.eta = etaRel;
   return s;
+}
+
+MaterialType dielectricType() {
+  return {"dielectric",
+          {},
+          "smooth glass, a delta reflection and refraction; ior (1.5)",
+          [](MaterialFactory&, const JsonNode& node) -> std::shared_ptr<const Material> {
+            return std::make_shared<Dielectric>(node.getFloat({"ior"}, 1.5f, Range::positive()));
+          }};
 }
 
 }  // namespace verity

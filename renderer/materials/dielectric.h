@@ -4,6 +4,7 @@
 #pragma once
 
 #include "materials/material.h"
+#include "materials/material_type.h"
 
 namespace verity {
 
@@ -33,5 +34,8 @@ class Dielectric : public Material {
  private:
   float ior_;
 };
+
+// "dielectric" in the scene format (material_registry.h).
+MaterialType dielectricType();
 
 }  // namespace verity

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "materials/material.h"
+#include "materials/material_type.h"
 
 namespace verity {
 
@@ -29,5 +30,8 @@ class DiffuseLight : public Material {
  private:
   Color3 emit_;
 };
+
+// "diffuse_light" in the scene format (material_registry.h).
+MaterialType diffuseLightType();
 
 }  // namespace verity

@@ -1,5 +1,6 @@
 #include "materials/lambertian.h"
 
+#include "materials/material_factory.h"
 #include "sampling/warp.h"
 
 namespace verity {
@@ -25,6 +26,15 @@ std::optional<BsdfSample> Lambertian::sample(const TextureQuery& q, const Vector
   s.weight = albedo_.eval(q);
   s.lobe = kReflection | kDiffuse;
   return s;
+}
+
+MaterialType lambertianType() {
+  return {"lambertian",
+          {},
+          "ideal diffuse reflection; albedo (0.8)",
+          [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
+            return std::make_shared<Lambertian>(f.parseAlbedo(node));
+          }};
 }
 
 }  // namespace verity

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "materials/material.h"
+#include "materials/material_type.h"
 
 namespace verity {
 
@@ -20,5 +21,8 @@ class Lambertian : public Material {
  private:
   TexturedColor albedo_;
 };
+
+// "lambertian" in the scene format (material_registry.h).
+MaterialType lambertianType();
 
 }  // namespace verity

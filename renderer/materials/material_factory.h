@@ -1,6 +1,9 @@
-// Builds a material from its JSON object (every type and spelling of the scene format).
+// Builds a material from its JSON object: looks its type up in the registry
+// (material_registry.h) and serves the types' build functions with albedos, textures,
+// named materials and warnings.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -22,10 +25,13 @@ class MaterialFactory {
   // A material's name or an inline material object.
   std::shared_ptr<const Material> reference(const JsonNode& node);
 
- private:
+  // For the types' build functions:
   // The "albedo" member (0.8 when absent), with a warning when it can exceed 1.
   TexturedColor parseAlbedo(const JsonNode& node);
+  TextureFactory& textures() { return textures_; }
+  void warn(VerityError warning) { warnings_.push_back(std::move(warning)); }
 
+ private:
   TextureFactory& textures_;
   std::vector<VerityError>& warnings_;
   std::map<std::string, std::shared_ptr<const Material>> named_;

@@ -1,6 +1,7 @@
 #include "materials/oren_nayar.h"
 
 #include "core/frame.h"
+#include "materials/material_factory.h"
 #include "materials/sample_util.h"
 #include "sampling/warp.h"
 
@@ -38,6 +39,17 @@ std::optional<BsdfSample> OrenNayar::sample(const TextureQuery& q, const Vector3
   if (wi.z() <= 0) return std::nullopt;
   const Vector3f wo = warp::squareToCosineHemisphere(u);
   return makeSample(wo, eval(q, wi, wo, mode), pdf(q, wi, wo), kReflection | kDiffuse);
+}
+
+MaterialType orenNayarType() {
+  return {"oren-nayar",
+          {"oren_nayar"},
+          "rough diffuse reflection; albedo (0.8), sigma (0.35, slope deviation in radians)",
+          [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
+            TexturedColor albedo = f.parseAlbedo(node);
+            const float sigma = node.getFloat({"sigma"}, 0.35f, Range::nonNegative());
+            return std::make_shared<OrenNayar>(std::move(albedo), sigma);
+          }};
 }
 
 }  // namespace verity

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "materials/material.h"
+#include "materials/material_type.h"
 
 namespace verity {
 
@@ -30,5 +31,8 @@ class OrenNayar : public Material {
   TexturedColor albedo_;
   float a_, b_;
 };
+
+// "oren-nayar" in the scene format (material_registry.h).
+MaterialType orenNayarType();
 
 }  // namespace verity

@@ -1,6 +1,7 @@
 #include "materials/phong.h"
 
 #include "core/frame.h"
+#include "materials/material_factory.h"
 #include "materials/sample_util.h"
 #include "sampling/warp.h"
 
@@ -36,6 +37,17 @@ std::optional<BsdfSample> Phong::sample(const TextureQuery& q, const Vector3f& w
   const Vector3f wo = lobeFrame.toWorld(warp::squareToPowerCosineLobe(u, exponent_)).normalized();
   if (wo.z() <= 0) return std::nullopt;  // the lobe dips below the horizon
   return makeSample(wo, eval(q, wi, wo, mode), pdf(q, wi, wo), kReflection | kGlossy);
+}
+
+MaterialType phongType() {
+  return {"phong",
+          {},
+          "normalised modified Phong lobe; albedo (0.8), exponent (10)",
+          [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
+            TexturedColor albedo = f.parseAlbedo(node);
+            const float exponent = node.getFloat({"exponent"}, 10.0f, Range{0.0f, 1e6f});
+            return std::make_shared<Phong>(std::move(albedo), exponent);
+          }};
 }
 
 }  // namespace verity

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "materials/material.h"
+#include "materials/material_type.h"
 
 namespace verity {
 
@@ -25,5 +26,8 @@ class Phong : public Material {
   TexturedColor albedo_;
   float exponent_;
 };
+
+// "phong" in the scene format (material_registry.h).
+MaterialType phongType();
 
 }  // namespace verity

@@ -1,6 +1,12 @@
 #include "materials/rough_conductor.h"
 
+#include <fmt/format.h>
+
 #include "materials/fresnel.h"
+#include "materials/material_factory.h"
+#include "materials/material_params.h"
+#include "materials/mirror.h"
+#include "materials/named_conductors.h"
 #include "materials/sample_util.h"
 
 namespace verity {
@@ -49,6 +55,93 @@ std::optional<BsdfSample> RoughConductor::sample(const TextureQuery& q, const Ve
   if (wo.z() <= 0) return std::nullopt;  // reflected below the horizon: an invalid sample
   // Value and density from (wi, wo) alone, so that the sample agrees with eval() and pdf().
   return makeSample(wo, eval(q, wi, wo, mode), pdf(q, wi, wo), kReflection | kGlossy);
+}
+
+namespace {
+
+// The complex index η + iκ: "conductor", a name from named_conductors.h, or "ior" (η) and
+// "ext" (κ), each a number or an RGB triple, by default 0.05 + 3.9i. Stating both a name
+// and an index is an error rather than a precedence rule: one of them would be ignored.
+void parseConductorIndex(const JsonNode& node, RoughConductor::Params& p) {
+  if (auto name = node.find({"conductor"})) {
+    if (node.has({"ior"}) || node.has({"ext"}))
+      name->fail("\"conductor\" and \"ior\"/\"ext\" both give the index; keep one");
+    const NamedConductor* c = findNamedConductor(name->asString());
+    if (!c)
+      name->fail(fmt::format("unknown conductor \"{}\" (known: {})", name->asString(),
+                             namedConductorList()));
+    p.eta = c->eta;
+    p.k = c->k;
+    return;
+  }
+  const auto eta = node.find({"ior"});
+  const auto k = node.find({"ext"});
+  p.eta = eta ? Color3(eta->asVector3(Range::positive()).array()) : Color3::Constant(0.05f);
+  p.k = k ? Color3(k->asVector3(Range::nonNegative()).array()) : Color3::Constant(3.9f);
+}
+
+// DIRT's "beckmann" and the seed's "ggx": α given directly, the complex Fresnel term.
+std::shared_ptr<const Material> buildComplexConductor(MicrofacetType type, MaterialFactory& f,
+                                                      const JsonNode& node) {
+  RoughConductor::Params p;
+  p.distribution = type;
+  p.sampling = parseSampling(node);
+  p.albedo = f.parseAlbedo(node);
+  p.roughness =
+      TexturedColor(Color3::Constant(node.getFloat({"ab", "alpha"}, 0.5f, Range::nonNegative())));
+  parseConductorIndex(node, p);
+  return std::make_shared<RoughConductor>(std::move(p));
+}
+
+std::string complexKeys() {
+  return "albedo (0.8, a tint), ab or alpha (0.5), ior and ext (0.05 and 3.9, each a number "
+         "or [r, g, b]) or conductor (one of " +
+         namedConductorList() + "), sampling (visible)";
+}
+
+}  // namespace
+
+MaterialType beckmannType() {
+  return {"beckmann",
+          {},
+          "rough conductor, Beckmann distribution; " + complexKeys(),
+          [](MaterialFactory& f, const JsonNode& node) {
+            return buildComplexConductor(MicrofacetType::Beckmann, f, node);
+          }};
+}
+
+MaterialType ggxType() {
+  return {"ggx",
+          {},
+          "rough conductor, GGX distribution; " + complexKeys(),
+          [](MaterialFactory& f, const JsonNode& node) {
+            return buildComplexConductor(MicrofacetType::GGX, f, node);
+          }};
+}
+
+MaterialType metalType() {
+  return {"metal",
+          {},
+          "DIRT's metal: a mirror at roughness 0, else GGX with alpha = roughness² and Schlick's "
+          "Fresnel with F0 = albedo; albedo (0.8), roughness (0), sampling (visible)",
+          [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
+            TexturedColor albedo = f.parseAlbedo(node);
+            // A texture-valued roughness must not be negative where it is a constant (a
+            // texture is clamped at lookup).
+            TexturedColor roughness = f.textures().parse(node, {"roughness"}, Color3::Zero());
+            if (roughness.isConstant() && !(roughness.constant() >= 0).all())
+              node[{"roughness"}].fail("roughness must not be negative");
+            if (roughness.isConstant() && roughness.constant().mean() == 0)
+              return std::make_shared<Mirror>(std::move(albedo));
+            RoughConductor::Params p;
+            p.distribution = MicrofacetType::GGX;
+            p.sampling = parseSampling(node);
+            p.albedo = std::move(albedo);
+            p.roughness = std::move(roughness);
+            p.squareRoughness = true;
+            p.fresnel = RoughConductor::FresnelModel::Schlick;
+            return std::make_shared<RoughConductor>(std::move(p));
+          }};
 }
 
 }  // namespace verity

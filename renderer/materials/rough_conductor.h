@@ -4,13 +4,17 @@
 //
 // Two parameterisations share it:
 //  - DIRT's "beckmann" and the seed's "ggx": alpha given directly ("ab"), Fresnel of the
-//    complex index ior + i·ext, multiplied by the albedo texture as a tint.
+//    complex index ior + i·ext, multiplied by the albedo texture as a tint. "ior" and
+//    "ext" are each a number or an RGB triple [r, g, b] (one index per channel); or
+//    "conductor" names a measured metal instead ("Au", "Ag", "Cu", "Al";
+//    named_conductors.h), and then neither may be given.
 //  - DIRT's "metal" with roughness r > 0: GGX with α = r² (the perceptual remapping of
 //    Burley 2012, "Physically-Based Shading at Disney"), Schlick's Fresnel with F0 = albedo,
 //    so that albedo is the colour at normal incidence as for the r = 0 mirror.
 #pragma once
 
 #include "materials/material.h"
+#include "materials/material_type.h"
 #include "materials/microfacet.h"
 
 namespace verity {
@@ -45,5 +49,11 @@ class RoughConductor : public Material {
   MicrofacetDistribution distribution(const TextureQuery& q) const;
   Params p_;
 };
+
+// "beckmann", "ggx" and "metal" in the scene format (material_registry.h); "metal" with
+// roughness 0 builds a Mirror.
+MaterialType beckmannType();
+MaterialType ggxType();
+MaterialType metalType();
 
 }  // namespace verity

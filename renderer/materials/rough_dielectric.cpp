@@ -2,6 +2,8 @@
 
 #include "materials/dielectric.h"
 #include "materials/fresnel.h"
+#include "materials/material_factory.h"
+#include "materials/material_params.h"
 #include "materials/sample_util.h"
 
 namespace verity {
@@ -111,6 +113,19 @@ std::optional<BsdfSample> RoughDielectric::sample(const TextureQuery& q, const V
   }
   // Value and density from (wi, wo) alone, so that the sample agrees with eval() and pdf().
   return makeSample(wo, eval(q, wi, wo, mode), pdf(q, wi, wo), lobe, eta);
+}
+
+MaterialType roughDielectricType() {
+  return {"rough_dielectric",
+          {"rough dielectric", "roughdielectric"},
+          "rough glass (Walter et al. 2007); distribution (ggx), alpha (0.1), ior (1.5), "
+          "sampling (visible)",
+          [](MaterialFactory&, const JsonNode& node) -> std::shared_ptr<const Material> {
+            const MicrofacetType distribution = parseDistribution(node);
+            const float alpha = node.getFloat({"alpha", "ab"}, 0.1f, Range::nonNegative());
+            const float ior = node.getFloat({"ior"}, 1.5f, Range::positive());
+            return std::make_shared<RoughDielectric>(distribution, alpha, ior, parseSampling(node));
+          }};
 }
 
 }  // namespace verity

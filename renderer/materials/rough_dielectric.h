@@ -15,6 +15,7 @@
 #pragma once
 
 #include "materials/material.h"
+#include "materials/material_type.h"
 #include "materials/microfacet.h"
 
 namespace verity {
@@ -48,5 +49,8 @@ class RoughDielectric : public Material {
   float ior_;
   bool indexMatched_;
 };
+
+// "rough_dielectric" in the scene format (material_registry.h).
+MaterialType roughDielectricType();
 
 }  // namespace verity

@@ -262,12 +262,12 @@ std::string JsonNode::asString() const {
   return value_->get<std::string>();
 }
 
-Vector3f JsonNode::asVector3() const {
-  if (value_->is_number()) return Vector3f::Constant(asFloat());
+Vector3f JsonNode::asVector3(Range range) const {
+  if (value_->is_number()) return Vector3f::Constant(asFloat(range));
   if (!value_->is_array() || value_->size() != 3)
     fail("expected a number or an array of 3 numbers, found " +
          (value_->is_array() ? fmt::format("an array of {}", value_->size()) : typeName(*value_)));
-  return {(*this)[0].asFloat(), (*this)[1].asFloat(), (*this)[2].asFloat()};
+  return {(*this)[0].asFloat(range), (*this)[1].asFloat(range), (*this)[2].asFloat(range)};
 }
 
 Vector2i JsonNode::asVector2i(int lo, int hi) const {

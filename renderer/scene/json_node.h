@@ -63,8 +63,8 @@ class JsonNode {
   int asInt(int lo, int hi) const;
   bool asBool() const;
   std::string asString() const;
-  // A number fills all three components.
-  Vector3f asVector3() const;
+  // A number fills all three components; each component must lie in `range`.
+  Vector3f asVector3(Range range = Range::any()) const;
   Vector2i asVector2i(int lo, int hi) const;
 
   // Typed reads of a member, with a default when absent.
