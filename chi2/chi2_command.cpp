@@ -5,7 +5,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "chi2/heatmap.h"
+#include "chi2/figure.h"
 #include "chi2/significance.h"
 #include "chi2/suite.h"
 
@@ -57,9 +57,10 @@ int runOne(const Chi2Args& a) {
   if (subject.deltaSamples() > 0)
     std::cout << fmt::format("  {} delta-lobe samples (not histogrammed)\n",
                              subject.deltaSamples());
-  if (!a.output.empty())
-    for (const std::string& p : chi2::writeHeatmaps(r, a.output))
-      std::cout << "  wrote " << p << "\n";
+  if (!a.output.empty()) {
+    const std::string figure = chi2::writeFigure(r, a.output);
+    std::cout << "  wrote " << figure << " (histogram in " << a.output << ".json)\n";
+  }
   return r.passed() ? 0 : 1;
 }
 
@@ -124,7 +125,9 @@ void addChi2Command(CLI::App& app) {
   cmd->add_flag("--inside", args->inside, "incident direction from below the surface");
   cmd->add_option("--samples", args->samples, "number of samples")->check(CLI::PositiveNumber);
   cmd->add_option("--seed", args->seed, "random seed");
-  cmd->add_option("-o,--output", args->output, "prefix of the PNG heatmaps");
+  cmd->add_option("-o,--output", args->output,
+                  "write PREFIX.png, observed and expected counts and (O-E)/sqrt(E) (matplotlib, "
+                  "/usr/bin/python3), and its data PREFIX.json");
   cmd->add_flag("--seed-table", args->seedTable, "print the seed report's table next to ours");
   cmd->callback([args] {
     if (!args->seedTable && args->material.empty())

@@ -5,7 +5,11 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "child_process.h"
+#include "test_directory.h"
 
 namespace verity {
 namespace {
@@ -38,6 +42,27 @@ TEST(Chi2Command, TheIndexIsNotASecondOption) {
   const testing::Outcome r = chi2(roughDielectric(1.5), {"--incoming", "45", "--ior", "1.5"});
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.stderrText.find("--ior"), std::string::npos) << r.stderrText;
+}
+
+// -o PREFIX writes the figure PREFIX.png and its data PREFIX.json.
+TEST(Chi2Command, OutputWritesTheFigureAndItsData) {
+  const std::filesystem::path prefix = testing::freshTestDirectory("verity-chi2-") / "ggx";
+  const testing::Outcome r =
+      chi2(R"({"type":"ggx","alpha":0.1})", {"--incoming", "45", "-o", prefix.string()});
+  EXPECT_EQ(r.status, 0) << r.stderrText;
+  std::ifstream png(prefix.string() + ".png", std::ios::binary);
+  char magic[8] = {};
+  png.read(magic, 8);
+  EXPECT_EQ(std::string(magic, 8), "\x89PNG\r\n\x1a\n");
+  EXPECT_TRUE(std::filesystem::exists(prefix.string() + ".json"));
+}
+
+TEST(Chi2Command, AnUnwritableOutputIsAnError) {
+  const testing::Outcome r =
+      chi2(R"({"type":"lambertian","albedo":0.5})", {"-o", "/nonexistent-directory/figure"});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.stderrText.find("/nonexistent-directory/figure.json"), std::string::npos)
+      << r.stderrText;
 }
 
 }  // namespace

@@ -4,14 +4,20 @@
 // suite's declared number of tests).
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
 #include "chi2/bsdf_subject.h"
 #include "chi2/microfacet_checks.h"
 #include "chi2/sampling_check.h"
 #include "chi2/suite.h"
+#include "failure_figure.h"
 #include "reference_ggx.h"
 
 namespace verity::chi2 {
 
+using testing::failureFigure;
 using testing::Flaw;
 using testing::ReferenceGgx;
 
@@ -39,7 +45,7 @@ TEST(BrokenSamplers, ReferenceImplementationPasses) {
                                           std::tuple{1.5f, 45.0, false, "dielectric_out_45"},
                                           std::tuple{1.5f, 30.0, true, "dielectric_in_30"}}) {
     const TestResult r = run(Flaw::None, ior, theta, inside, name);
-    EXPECT_TRUE(r.passed()) << r.report();
+    EXPECT_TRUE(r.passed()) << r.report() << "\n" << (r.passed() ? "" : failureFigure(r, name));
   }
 }
 
@@ -72,6 +78,28 @@ TEST(BrokenSamplers, WeightOffByCosineIsRejected) {
   const TestResult r = run(Flaw::WeightMissingCos, 0, 60, false, "weight_cos");
   EXPECT_GT(r.audit.count(Defect::Weight), 0) << r.report();
   EXPECT_FALSE(r.passed());
+}
+
+// The suite's failure message names a figure that exists (a PNG) in the failure directory,
+// here moved by VERITY_CHI2_FIGURES so that no figure of a passing test lies beside those of
+// real failures.
+TEST(BrokenSamplers, AFailureNamesItsFigure) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "verity-chi2-failure-figure";
+  std::filesystem::remove_all(dir);
+  setenv("VERITY_CHI2_FIGURES", dir.c_str(), 1);
+  const TestResult r = run(Flaw::MissingJacobian, 0, 30, false, "figure");
+  ASSERT_FALSE(r.passed());
+  const std::string message = failureFigure(r);
+  unsetenv("VERITY_CHI2_FIGURES");
+  const std::string tag = "  figure: ";
+  ASSERT_EQ(message.rfind(tag, 0), 0u) << message;
+  const std::filesystem::path path = message.substr(tag.size(), message.size() - tag.size() - 1);
+  EXPECT_EQ(path, dir / "BrokenSamplers.AFailureNamesItsFigure.png");
+  std::ifstream png(path, std::ios::binary);
+  char magic[8] = {};
+  png.read(magic, 8);
+  EXPECT_EQ(std::string(magic, 8), "\x89PNG\r\n\x1a\n") << path;
 }
 
 TEST(BrokenSamplers, PdfTwoPercentTooHighIsRejected) {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "failure_figure.h"
+
 namespace verity::chi2::suite {
 
 namespace {
@@ -21,10 +23,13 @@ std::string caseName(const ::testing::TestParamInfo<Case>& info) {
   return info.param.name;
 }
 
+// A failing configuration's message names its figure (failure_figure.h).
 void expectPassed(const TestResult& r) {
-  EXPECT_TRUE(r.chiSquarePassed()) << r.report();
-  EXPECT_TRUE(r.integral.passed) << r.report();
-  EXPECT_TRUE(r.audit.clean()) << r.report();
+  if (r.passed()) return;
+  const std::string message = r.report() + "\n" + testing::failureFigure(r);
+  EXPECT_TRUE(r.chiSquarePassed()) << message;
+  EXPECT_TRUE(r.integral.passed) << message;
+  EXPECT_TRUE(r.audit.clean()) << message;
 }
 
 }  // namespace
