@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "materials/material_factory.h"
+#include "materials/named_conductors.h"
 #include "scene/json_node.h"
 
 namespace verity::chi2::suite {
@@ -127,6 +128,45 @@ std::vector<BsdfCase> bsdfCases() {
                             d, ior, s),
                 th, inside, false);
       }
+  // Appended after the sweeps above so that their quick subset stays as it was.
+  // Rough conductors with one index per channel: an RGB index, and the measured metals of
+  // named_conductors.h ("conductor"), at incidences normal, oblique and grazing.
+  const double kConductorIncidences[] = {0, 60, 89};
+  for (const char* d : kDistributions)
+    for (const char* s : kSamplings)
+      for (double a : {0.05, 0.3, 1.0})
+        for (double th : kConductorIncidences)
+          add(fmt::format("{}_{}_a{}_rgbindex", d, s, token(a)),
+              fmt::format(R"({{"type":"{}","alpha":{},"ior":[0.2,1.1,1.4],"ext":[3.6,2.5,1.9],)"
+                          R"("sampling":"{}"}})",
+                          d, a, s),
+              th, false, false);
+  for (const NamedConductor& c : namedConductors())
+    for (const char* d : kDistributions)
+      for (double th : kConductorIncidences)
+        add(fmt::format("{}_visible_a0p3_{}", d, c.name),
+            fmt::format(R"({{"type":"{}","alpha":0.3,"conductor":"{}"}})", d, c.name), th, false,
+            false);
+  // DIRT's rough metal (GGX with alpha = roughness², Schlick's Fresnel; roughness 0 is a
+  // mirror, a delta lobe the histogram cannot see) and blends of non-delta materials.
+  for (bool rot : {false, true})
+    for (double th : kConductorIncidences) {
+      for (const char* s : kSamplings)
+        for (double r : {0.3, 1.0})
+          add(fmt::format("metal_{}_r{}", s, token(r)),
+              fmt::format(R"({{"type":"metal","albedo":[0.9,0.6,0.3],"roughness":{},)"
+                          R"("sampling":"{}"}})",
+                          r, s),
+              th, false, rot);
+      add("blend_lambertian_ggx",
+          R"({"type":"blend","a":{"type":"lambertian","albedo":0.8},)"
+          R"("b":{"type":"ggx","alpha":0.3,"conductor":"Au"},"amount":0.3})",
+          th, false, rot);
+      add("blend_orennayar_blinnphong",
+          R"({"type":"blend","a":{"type":"oren-nayar","sigma":0.5},)"
+          R"("b":{"type":"blinnphong","exponent":50},"amount":0.7})",
+          th, false, rot);
+    }
   // The quick subset: every 25th configuration, a fixed stride over all material types.
   for (size_t i = 0; i < v.size(); ++i) v[i].quick = i % 25 == 0;
   return v;
