@@ -123,6 +123,8 @@ CASES = {
     "marble-transform-unknown-key": (mat(type="lambertian", albedo={"type": "marble", "transform": {"rotate": 30}}), "surfaces[0].material.albedo.transform"),
     "dielectric-ior-zero": (mat(type="dielectric", ior=0), "surfaces[0].material.ior"),
     "dielectric-ior-negative": (mat(type="dielectric", ior=-1.5), "surfaces[0].material.ior"),
+    "conductor-unknown-metal": (mat(type="ggx", conductor="gold"), 'surfaces[0].material.conductor: unknown conductor "gold"'),
+    "conductor-ior-wrong-length": (mat(type="beckmann", ior=[0.2, 1.1]), "surfaces[0].material.ior"),
 }
 
 

@@ -368,6 +368,16 @@ def ggx():
          "ab": a, "ior": 0.05, "ext": 3.9} for a in ALPHAS])
 
 
+def metals():
+    # measured complex indices by name (renderer/materials/named_conductors.cpp), and one
+    # stated per channel; albedo 1: no tint (the default, 0.8, would darken the metal)
+    named = [{"name": m, "type": "ggx", "albedo": 1, "ab": 0.15, "conductor": m}
+             for m in ("Au", "Cu", "Ag", "Al")]
+    rgb = {"name": "rgb index", "type": "beckmann", "albedo": 1, "ab": 0.15,
+           "ior": [0.2, 0.9, 1.1], "ext": [3.9, 2.4, 2.2]}
+    return sphere_row_scene(named + [rgb])
+
+
 def rough_glass():
     mats = [
         {"name": "floor", "type": "lambertian",
@@ -466,6 +476,7 @@ ALL = {
     "phong": phong,
     "beckmann": beckmann,
     "ggx": ggx,
+    "metals": metals,
     "rough-glass": rough_glass,
     "veach-mats": veach_mats,
 }
