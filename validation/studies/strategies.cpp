@@ -2,12 +2,17 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
-#include "film/image_io.h"
+#include "core/error.h"
 #include "render/component_images.h"
+#include "validation/studies/npy_file.h"
+#include "validation/studies/relative_error.h"
 #include "validation/studies/seeds.h"
+#include "validation/studies/strategy_variance.h"
 #include "validation/studies/study_scene.h"
 #include "validation/studies/timed_render.h"
 
@@ -16,8 +21,13 @@ namespace verity::studies {
 namespace {
 
 std::string strategiesKey(const nlohmann::json& r) {
-  return fmt::format("{}|{}x{}|{}|{}", r.value("scene", ""), r.value("width", 0),
-                     r.value("height", 0), r.value("max_bounces", 0), r.value("spp", 0));
+  // Records of the one-render study (before budgets and runs) read as run 0 of their spp,
+  // with no path tracer.
+  const std::string pathTracer =
+      r.contains("path_tracer") ? r["path_tracer"].value("integrator", "") : "";
+  return fmt::format("{}|{}x{}|{}|{}|{}|{}|{}", r.value("scene", ""), r.value("width", 0),
+                     r.value("height", 0), r.value("max_bounces", 0), r.value("budget_type", "spp"),
+                     r.value("budget", r.value("spp", 0.0)), r.value("run", 0), pathTracer);
 }
 
 // Mean over pixels and channels of a film's pixel means.
@@ -28,75 +38,211 @@ double imageMean(const Film& film) {
   return sum / (3.0 * film.width() * film.height());
 }
 
+// A render with its component images, and what the record says of it.
+struct ComponentRender {
+  std::unique_ptr<ComponentImages> components;
+  Film film;
+  nlohmann::json record;
+};
+
+ComponentRender renderComponents(const SceneFile& file, const Integrator& integrator,
+                                 const IntegratorSettings& settings, ComponentLayout::Kind kind,
+                                 const StrategiesConfig& config, double budget, int threads,
+                                 uint64_t seed) {
+  const Vector2i resolution = file.scene->camera().resolution();
+  ComponentRender r{
+      std::make_unique<ComponentImages>(ComponentLayout(kind, settings.maxBounces), resolution),
+      Film(resolution),
+      {}};
+  const bool byTime = config.budgetType == "time";
+  const TimedRender timed =
+      timedRender(file, integrator, r.film, byTime ? 0 : int(std::lround(budget)), threads, seed,
+                  byTime ? budget : 0, r.components.get());
+  r.record = {{"integrator", settings.type},     {"seed", seed},
+              {"spp", timed.stats.passes},       {"wall_seconds", timed.wallSeconds},
+              {"cpu_seconds", timed.cpuSeconds}, {"invalid_samples", timed.stats.invalidSamples}};
+  return r;
+}
+
+// The weighted strategy images, in the record's order, as float16 (height, width, RGB)
+// planes: the pyramid figure needs no more precision, and the file is half the size.
+void writeStrategyImages(const std::filesystem::path& npy, const ComponentImages& components) {
+  const ComponentLayout& layout = components.layout();
+  std::vector<uint16_t> data;
+  size_t images = 0;
+  for (int i = 0; i < layout.size(); ++i) {
+    if (!layout[i].weighted) continue;
+    const Film& film = components.film(i);
+    for (int y = 0; y < film.height(); ++y)
+      for (int x = 0; x < film.width(); ++x) {
+        const Color3 m = film.mean(x, y);
+        for (int c = 0; c < 3; ++c)
+          data.push_back(Eigen::numext::bit_cast<uint16_t>(Eigen::half(m[c])));
+      }
+    ++images;
+  }
+  const Film& first = components.film(0);
+  writeNpy(npy, data.data(), data.size() * sizeof(uint16_t), "<f2",
+           {images, size_t(first.height()), size_t(first.width()), 3});
+}
+
 }  // namespace
 
 StudyProgress runStrategiesStudy(const StrategiesConfig& config,
                                  const std::function<void(const std::string&)>& log) {
+  if (config.budgetType != "spp" && config.budgetType != "time")
+    throw VerityError("", "", "the budget is samples per pixel (--spp) or seconds (--time)");
+  if (config.budgets.empty()) throw VerityError("", "", "no budget given");
+  for (double b : config.budgets)
+    if (!(b > 0)) throw VerityError("", "", fmt::format("budgets must be positive, not {}", b));
+
   std::optional<ImageChannels> reference;
   if (!config.reference.empty()) reference = readExr(config.reference);
   const SceneFile file = loadStudyScene(config.scene, config.resolution > 0 ? config.resolution
                                                       : reference           ? reference->width
                                                                             : 0);
   const IntegratorSettings settings = studyIntegrator(file, "bdpt", config.maxBounces);
+  const IntegratorSettings ptSettings =
+      studyIntegrator(file, config.pathTracer, settings.maxBounces);
   const auto integrator = makeIntegrator(settings);
+  const auto pathTracer = makeIntegrator(ptSettings);
   const Vector2i resolution = file.scene->camera().resolution();
-  const int threads = config.threads > 0 ? config.threads : std::max(1, machineInfo().cores);
-
-  nlohmann::json record = recordHeader("strategies", config.scene, resolution, settings);
-  record["spp"] = config.spp;
-  StudyProgress progress;
-  progress.total = 1;
-  StudyOutput output(config.output, "strategies", strategiesKey);
-  if (output.has(record)) {
-    progress.skipped = 1;
-    return progress;
-  }
-  ComponentImages components(
-      ComponentLayout(ComponentLayout::Kind::Strategies, settings.maxBounces), resolution);
-  const uint64_t seed = runSeed(settings.type, "strategies", config.spp, 0);
-  Film film(resolution);
-  const TimedRender timed =
-      timedRender(file, *integrator, film, config.spp, threads, seed, 0, &components);
-  const double total = imageMean(film);
-  nlohmann::json strategies = nlohmann::json::array();
-  const ComponentLayout& layout = components.layout();
-  for (int i = 0; i < layout.size(); ++i) {
-    const ComponentLayout::Component& c = layout[i];
-    if (!c.weighted) continue;
-    const double mean = imageMean(components.film(i));
-    strategies.push_back({{"s", c.s},
-                          {"t", c.t},
-                          {"bounces", c.bounces},
-                          {"mean", mean},
-                          {"share", total > 0 ? mean / total : 0.0}});
-  }
   const MachineInfo machine = machineInfo();
-  record.update({{"threads", threads},
-                 {"seed", seed},
-                 {"wall_seconds", timed.wallSeconds},
-                 {"cpu_seconds", timed.cpuSeconds},
-                 {"invalid_samples", timed.stats.invalidSamples},
-                 {"image_mean", total},
-                 {"strategies", strategies}});
-  record.update(provenance(machine, sourceRevision()));
+  const std::string revision = sourceRevision();
+  const int threads = config.threads > 0 ? config.threads : std::max(1, machine.cores);
+  const double largestBudget = *std::max_element(config.budgets.begin(), config.budgets.end());
+  const std::filesystem::path imageDir =
+      config.output.parent_path() / (config.output.stem().string() + "-images");
+  // spp budgets keep the seed of the one-render study, so its records stay reproducible.
+  const std::string seedKind = config.budgetType == "spp" ? "strategies" : "strategies time";
+
+  // The share of the full image (the reference's max bounces) that paths longer than
+  // max_bounces carry, which no strategy here sees.
+  double referenceMean = 0;
   if (reference) {
-    // The share of the full image (the reference's max bounces) that paths longer than
-    // max_bounces carry, which no strategy here sees.
     double sum = 0;
     for (const char* c : {"R", "G", "B"})
       for (float v : reference->planes.at(c)) sum += std::isfinite(v) ? v : 0;
-    const double full = sum / (3.0 * reference->width * reference->height);
-    const auto it = reference->attributes.find("verity:max_bounces");
-    record["reference"] = config.reference.string();
-    record["reference_mean"] = full;
-    record["reference_max_bounces"] = it == reference->attributes.end() ? "" : it->second;
-    record["share_beyond_max_bounces"] = full > 0 ? 1 - total / full : 0.0;
+    referenceMean = sum / (3.0 * reference->width * reference->height);
   }
-  output.append(record);
-  progress.done = 1;
-  if (log)
-    log(fmt::format("bdpt strategies, {} spp, max bounces {}: {:.3f} s wall, {} strategies",
-                    config.spp, settings.maxBounces, timed.wallSeconds, strategies.size()));
+
+  StudyOutput output(config.output, "strategies", strategiesKey);
+  StudyProgress progress;
+  progress.total = int(config.runs * config.budgets.size());
+  for (int run = 0; run < config.runs; ++run)
+    for (double budget : config.budgets) {
+      nlohmann::json record = recordHeader("strategies", config.scene, resolution, settings);
+      record.update({{"budget_type", config.budgetType},
+                     {"budget", budget},
+                     {"run", run},
+                     {"path_tracer", {{"integrator", ptSettings.type}}}});
+      if (output.has(record)) {
+        ++progress.skipped;
+        continue;
+      }
+      const ComponentRender strategies =
+          renderComponents(file, *integrator, settings, ComponentLayout::Kind::Strategies, config,
+                           budget, threads, runSeed(settings.type, seedKind, budget, run));
+      const ComponentRender lengths = renderComponents(
+          file, *integrator, settings, ComponentLayout::Kind::PathLengths, config, budget, threads,
+          runSeed(settings.type + " path lengths", seedKind, budget, run));
+      const ComponentRender traced = renderComponents(
+          file, *pathTracer, ptSettings, ComponentLayout::Kind::PathLengths, config, budget,
+          threads, runSeed(ptSettings.type, seedKind, budget, run));
+
+      // r_k: BDPT's length-k image from its own render, independent of the strategies'; all
+      // of length k are averaged over the pixels where r_k is non-zero. (Not over those where
+      // a strategy's own image is: for a strategy that rarely finds a path, such as (0, 3)
+      // hitting a small light, that keeps the pixels it happened to reach and biases its mean
+      // and variance upward, by more at smaller budgets.)
+      auto lengthImage = [&](int k) -> const Film& { return lengths.components->film(k); };
+      std::vector<std::vector<uint8_t>> lit;
+      for (int k = 0; k <= settings.maxBounces; ++k) lit.push_back(nonZeroPixels(lengthImage(k)));
+      const double total = imageMean(strategies.film);
+      nlohmann::json strategyList = nlohmann::json::array();
+      const ComponentLayout& layout = strategies.components->layout();
+      for (int i = 0; i < layout.size(); ++i) {
+        const ComponentLayout::Component& c = layout[i];
+        if (!c.weighted) continue;
+        const Film& weighted = strategies.components->film(i);
+        const Film& unweighted = strategies.components->film(layout.strategyIndex(c.s, c.t, false));
+        const Film& rk = lengthImage(c.bounces);
+        const std::vector<uint8_t>& pixels = lit[c.bounces];
+        const ComponentVariance w = componentVariance(weighted, rk, pixels);
+        const ComponentVariance u = componentVariance(unweighted, rk, pixels);
+        const ComponentVariance r = componentVariance(rk, rk, pixels);
+        // The pixels of r_k the strategy reached in this render: its coverage, to its samples.
+        const std::vector<uint8_t> reached = nonZeroPixels(unweighted);
+        size_t reachedPixels = 0;
+        for (size_t p = 0; p < reached.size(); ++p) reachedPixels += reached[p] && pixels[p];
+        const double mean = imageMean(weighted);
+        strategyList.push_back({{"s", c.s},
+                                {"t", c.t},
+                                {"bounces", c.bounces},
+                                {"mean", mean},
+                                {"share", total > 0 ? mean / total : 0.0},
+                                {"pixels", u.pixels},
+                                {"pixels_reached", reachedPixels},
+                                {"rel_variance_weighted", w.relVariance},
+                                {"rel_variance_unweighted", u.relVariance},
+                                {"unweighted_mean", u.mean},
+                                {"unweighted_standard_error", u.standardError},
+                                {"length_mean", r.mean},
+                                {"length_standard_error", r.standardError}});
+      }
+      nlohmann::json lengthList = nlohmann::json::array();
+      for (int k = 0; k <= settings.maxBounces; ++k) {
+        const ComponentVariance b = componentVariance(lengthImage(k), lengthImage(k), lit[k]);
+        const ComponentVariance p =
+            componentVariance(traced.components->film(k), lengthImage(k), lit[k]);
+        lengthList.push_back({{"bounces", k},
+                              {"pixels", b.pixels},
+                              {"mean", b.mean},
+                              {"rel_variance", b.relVariance},
+                              {"path_tracer_mean", p.mean},
+                              {"path_tracer_rel_variance", p.relVariance}});
+      }
+
+      record.update(strategies.record);
+      record.update({{"threads", threads},
+                     {"image_mean", total},
+                     {"rel_mse_epsilon", kRelEpsilon},
+                     {"strategies", strategyList},
+                     {"lengths", lengthList},
+                     {"bdpt_lengths", lengths.record},
+                     {"path_tracer", traced.record}});
+      record.update(provenance(machine, revision));
+      if (reference) {
+        const auto it = reference->attributes.find("verity:max_bounces");
+        record["reference"] = config.reference.string();
+        record["reference_mean"] = referenceMean;
+        record["reference_max_bounces"] = it == reference->attributes.end() ? "" : it->second;
+        record["share_beyond_max_bounces"] = referenceMean > 0 ? 1 - total / referenceMean : 0.0;
+      }
+      if (config.images && run == 0 && budget == largestBudget) {
+        std::filesystem::create_directories(imageDir);
+        const std::filesystem::path npy =
+            imageDir / fmt::format("{}_strategies_{}{}.npy", config.scene.stem().string(), budget,
+                                   config.budgetType == "spp" ? "spp" : "s");
+        writeStrategyImages(npy, *strategies.components);
+        record["strategy_images"] =
+            std::filesystem::relative(npy, config.output.parent_path().empty()
+                                               ? std::filesystem::path(".")
+                                               : config.output.parent_path())
+                .string();
+      }
+      output.append(record);
+      ++progress.done;
+      if (log)
+        log(fmt::format(
+            "[{}/{}] strategies {}={} run={}, max bounces {}: bdpt {} spp {:.3f} s (strategies), "
+            "{} spp {:.3f} s (path lengths); {} {} spp {:.3f} s",
+            progress.done + progress.skipped, progress.total, config.budgetType, budget, run,
+            settings.maxBounces, strategies.record["spp"].get<int>(),
+            strategies.record["wall_seconds"].get<double>(), lengths.record["spp"].get<int>(),
+            lengths.record["wall_seconds"].get<double>(), ptSettings.type,
+            traced.record["spp"].get<int>(), traced.record["wall_seconds"].get<double>()));
+    }
   return progress;
 }
 

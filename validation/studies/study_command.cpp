@@ -112,19 +112,34 @@ void addSpeedup(CLI::App& study) {
 
 void addStrategies(CLI::App& study) {
   auto config = std::make_shared<studies::StrategiesConfig>();
+  auto spp = std::make_shared<std::vector<double>>();
+  auto time = std::make_shared<std::vector<double>>();
   auto reference = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>("strategies.jsonl");
+  auto noImages = std::make_shared<bool>(false);
   CLI::App* cmd = study.add_subcommand(
       "strategies",
-      "One BDPT render split into its MIS-weighted strategies (s, t): each strategy's share "
-      "of the image");
+      "BDPT split into its strategies (s, t) per run and budget: each strategy's share of the "
+      "image and the relative variance of its weighted and unweighted images, beside BDPT's "
+      "and a path tracer's path-length images");
   cmd->add_option("scene", config->scene, "Scene file (.json)")->required();
-  cmd->add_option("--spp", config->spp, "Samples per pixel")
+  CLI::Option* sppOption =
+      cmd->add_option("--spp", *spp, "Budgets in samples per pixel, comma-separated (default 64)")
+          ->delimiter(',');
+  CLI::Option* timeOption =
+      cmd->add_option("--time", *time, "Budgets in seconds of wall time, comma-separated")
+          ->delimiter(',');
+  sppOption->excludes(timeOption);
+  timeOption->excludes(sppOption);
+  cmd->add_option("--runs", config->runs, "Independent runs per budget")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   cmd->add_option("--max-bounces", config->maxBounces, "Maximum scattering events per path")
       ->capture_default_str()
       ->check(CLI::Range(0, kMaxBouncesLimit));
+  cmd->add_option("--path-tracer", config->pathTracer,
+                  "The path tracer whose path-length images are set beside the strategies")
+      ->capture_default_str();
   cmd->add_option("--resolution", config->resolution,
                   "Image width (default: the reference's, else the scene's)")
       ->check(CLI::PositiveNumber);
@@ -134,11 +149,16 @@ void addStrategies(CLI::App& study) {
                   "Reference EXR of the full image, for the share of longer paths (optional)");
   cmd->add_option("-o,--output", *output, "Results file (JSON Lines; appended to)")
       ->capture_default_str();
+  cmd->add_flag("--no-images", *noImages,
+                "Do not save the weighted strategy images at the largest budget");
   cmd->callback([=] {
+    config->budgetType = time->empty() ? "spp" : "time";
+    if (!spp->empty() || !time->empty()) config->budgets = time->empty() ? *spp : *time;
     config->reference = *reference;
     config->output = *output;
+    config->images = !*noImages;
     const studies::StudyProgress p = studies::runStrategiesStudy(*config, logLine);
-    fmt::print(stderr, "{} renders done, {} already in {}\n", p.done, p.skipped, *output);
+    fmt::print(stderr, "{} records done, {} already in {}\n", p.done, p.skipped, *output);
     printSummary(*output);
   });
 }

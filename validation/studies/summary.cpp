@@ -242,8 +242,20 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
                                 {"parallel_efficiency", s * fewest / std::max(threads, 1)}});
     }
   }
+  // One strategies record per scene, resolution and max bounces: the one of most samples
+  // (of the lowest run), whose shares are the least noisy.
+  std::map<std::string, const nlohmann::json*> shareRecords;
   for (const nlohmann::json& r : records) {
     if (r.value("study", "") != "strategies" || !r.contains("strategies")) continue;
+    const std::string key = fmt::format("{}|{}x{}|{}", r.value("scene", ""), r.value("width", 0),
+                                        r.value("height", 0), r.value("max_bounces", 0));
+    const nlohmann::json*& kept = shareRecords[key];
+    if (!kept || r.value("spp", 0) > kept->value("spp", 0) ||
+        (r.value("spp", 0) == kept->value("spp", 0) && r.value("run", 0) < kept->value("run", 0)))
+      kept = &r;
+  }
+  for (const auto& [key, record] : shareRecords) {
+    const nlohmann::json& r = *record;
     std::vector<nlohmann::json> ranked(r["strategies"].begin(), r["strategies"].end());
     std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) {
       return a.value("share", 0.0) > b.value("share", 0.0);

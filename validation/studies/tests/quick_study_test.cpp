@@ -133,7 +133,7 @@ TEST(QuickStudy, StrategiesSharesAddUpAndResume) {
   fs::create_directories(dir);
   StrategiesConfig config;
   config.scene = fs::path(VERITY_SOURCE_DIR) / "scenes" / "cornell-box.json";
-  config.spp = 8;
+  config.budgets = {8};
   config.resolution = 16;
   config.maxBounces = 3;
   config.output = dir / "strategies.jsonl";
