@@ -24,6 +24,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.colors import LogNorm  # noqa: E402
 
+import strategy_figures  # noqa: E402  (this folder: the strategies study's figures)
+
 
 def read_records(paths):
     records = []
@@ -540,6 +542,9 @@ def main():
     meta_runs = f"Runs were made on {', '.join(hosts)} at revision(s) {', '.join(revs)}."
 
     tbls = tables(summary)
+    more_figures, more_tables = strategy_figures.add(records, args.out)
+    figures += more_figures
+    tbls += more_tables
     accuracy = accuracy_table(summary)
     md = ["# Verity study report", "", meta, "", meta_runs, ""]
     if accuracy:
