@@ -128,10 +128,12 @@ def plot_pyramid(key, rs, out_dir, name):
                             bottom=0.01, top=1 - 0.45 / height)
     for k in range(kmax + 1):
         row = [images[order[(s, k + 2 - s)]] for s in range(k + 2)]
-        # One exposure per row: the row's sum (BDPT's length-k image) at its 99th percentile
-        # maps to white, so that the dim long paths are seen; the factor is printed.
-        total = np.sum(row, axis=0)
-        top = np.percentile(total, 99)
+        # One exposure per row: the row's sum (BDPT's length-k image) at the 99th percentile
+        # of its lit pixels maps to white, so that the dim long paths are seen (and the light,
+        # under 1% of the pixels at k = 0, is not clipped); the factor is printed.
+        lit = np.sum(row, axis=0).max(axis=2)
+        lit = lit[lit > 0]
+        top = np.percentile(lit, 99) if lit.size else 0
         scale = 1 / top if top > 0 else 1
         offset = cols - (k + 2)
         for s, img in enumerate(row):
@@ -147,7 +149,9 @@ def plot_pyramid(key, rs, out_dir, name):
     fig.suptitle(f"{r['scene']}: MIS-weighted strategy images, {r['spp']} spp "
                  f"(row k: k bounces, (s, t) with s + t = k + 2)", fontsize=8,
                  y=1 - 0.1 / height)
-    fig.savefig(os.path.join(out_dir, name), dpi=130, bbox_inches="tight")
+    # Enough dots for one image pixel per dot up to 512 wide, so that noise is not aliased.
+    fig.savefig(os.path.join(out_dir, name), dpi=max(130, min(w, 512) / cell),
+                bbox_inches="tight")
     plt.close(fig)
     return name
 
