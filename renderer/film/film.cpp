@@ -1,6 +1,10 @@
 #include "film/film.h"
 
+#include <algorithm>
+#include <cstring>
 #include <numeric>
+
+#include "core/hash.h"
 
 namespace verity {
 
@@ -28,6 +32,22 @@ void Film::addZeroSamples(uint32_t n) {
   for (auto& c : count_) c += n;
 }
 
+void Film::add(const Film& other) {
+  for (size_t i = 0; i < sum_.size(); ++i) {
+    sum_[i] += other.sum_[i];
+    sumSquares_[i] += other.sumSquares_[i];
+    count_[i] += other.count_[i];
+    invalid_[i] += other.invalid_[i];
+  }
+}
+
+void Film::clear() {
+  std::fill(sum_.begin(), sum_.end(), Eigen::Array3d::Zero());
+  std::fill(sumSquares_.begin(), sumSquares_.end(), Eigen::Array3d::Zero());
+  std::fill(count_.begin(), count_.end(), 0u);
+  std::fill(invalid_.begin(), invalid_.end(), 0u);
+}
+
 Color3 Film::mean(int x, int y) const {
   const size_t i = index(x, y);
   if (count_[i] == 0) return Color3::Zero();
@@ -44,6 +64,20 @@ Color3 Film::sampleVariance(int x, int y) const {
 
 uint64_t Film::invalidSamples() const {
   return std::accumulate(invalid_.begin(), invalid_.end(), uint64_t(0));
+}
+
+uint64_t Film::digest() const {
+  uint64_t h = hashValues(resolution_.x(), resolution_.y());
+  for (size_t i = 0; i < sum_.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      uint64_t bits[2];
+      std::memcpy(&bits[0], &sum_[i][c], sizeof(double));
+      std::memcpy(&bits[1], &sumSquares_[i][c], sizeof(double));
+      h = hashValues(h, bits[0], bits[1]);
+    }
+    h = hashValues(h, count_[i], invalid_[i]);
+  }
+  return h;
 }
 
 uint64_t Film::validSamples() const {

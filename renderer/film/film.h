@@ -3,6 +3,7 @@
 // out, never averaged in.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "core/math.h"
@@ -19,6 +20,10 @@ class Film {
   void addInvalidSample(int x, int y) { ++invalid_[index(x, y)]; }
   // Counts `n` zero-valued samples in every pixel (renders that need no ray).
   void addZeroSamples(uint32_t n);
+  // Adds another film's sums, sums of squares and counts pixel by pixel (same resolution).
+  void add(const Film& other);
+  // Back to no samples at all.
+  void clear();
 
   const Vector2i& resolution() const { return resolution_; }
   int width() const { return resolution_.x(); }
@@ -30,6 +35,16 @@ class Film {
   Color3 sampleVariance(int x, int y) const;
   uint64_t invalidSamples() const;
   uint64_t validSamples() const;
+  // A hash of every accumulator's bits: two films with the same digest summed the same numbers
+  // in the same order, which images rounded to float cannot show.
+  uint64_t digest() const;
+
+  // The accumulators themselves, pixel-major, for moving a film between processes
+  // (distributed/film_transfer.h).
+  std::span<Eigen::Array3d> sums() { return sum_; }
+  std::span<Eigen::Array3d> sumSquares() { return sumSquares_; }
+  std::span<uint32_t> counts() { return count_; }
+  std::span<uint32_t> invalidCounts() { return invalid_; }
 
  private:
   size_t index(int x, int y) const { return size_t(y) * resolution_.x() + x; }

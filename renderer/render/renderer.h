@@ -1,7 +1,8 @@
 // Renders an image in passes of one sample per pixel over 16×16 tiles on a TBB task arena.
 // Every sample's random numbers depend only on (seed, pixel, sample index), each tile is
-// written by one task, so the image is bit-identical for any thread count or schedule.
-// Stopping between passes leaves every pixel with the same number of samples.
+// written by one task, and passes are summed in fixed chunks (render/pass_chunks.h), so the
+// image is bit-identical for any thread count or schedule, and for any number of processes
+// (distributed/). Stopping between passes leaves every pixel with the same number of samples.
 #pragma once
 
 #include <atomic>
@@ -31,8 +32,6 @@ struct RenderStats {
   uint64_t samples = 0;
   uint64_t invalidSamples = 0;
 };
-
-inline constexpr int kTileSize = 16;
 
 RenderStats render(const Scene& scene, const Integrator& integrator, const Sampler& sampler,
                    Film& film, const RenderOptions& options);
