@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <fstream>
 
 #include "commands/component_output.h"
+#include "distributed/distributed_render.h"
 #include "film/image_io.h"
 #include "integrators/integrator_registry.h"
 #include "integrators/integrator_settings.h"
@@ -52,10 +54,22 @@ void checkWritable(const std::filesystem::path& output) {
   std::filesystem::remove(probe, error);
 }
 
-int run(const RenderArgs& args) {
+// Written under a temporary name and renamed when whole, so that a job killed while writing
+// (a rank of an MPI job dying takes rank 0 with it) leaves no file that looks complete.
+void writeImage(const std::filesystem::path& out, const ImageChannels& image) {
+  const std::filesystem::path writing = out.string() + ".writing";
+  if (lowerExtension(out) == ".exr")
+    writeExr(writing, image);
+  else
+    writePng(writing, image);
+  std::filesystem::rename(writing, out);
+}
+
+int run(const RenderArgs& args, const ProcessGroup& group) {
   SceneFile file = loadScene(args.scene);
-  for (const VerityError& warning : file.warnings)
-    fmt::print(stderr, "verity: warning: {}\n", warning.what());
+  if (group.isRoot())
+    for (const VerityError& warning : file.warnings)
+      fmt::print(stderr, "verity: warning: {}\n", warning.what());
   if (args.strict && !file.warnings.empty())
     throw VerityError(
         args.scene, "",
@@ -68,6 +82,7 @@ int run(const RenderArgs& args) {
   }
   if (args.maxBounces >= 0) settings.maxBounces = args.maxBounces;
   if (args.explain) {
+    if (!group.isRoot()) return 0;
     fmt::print("{}", file.scene->summary().explain());
     fmt::print("integrator: {} (max_bounces {})\n", settings.type, settings.maxBounces);
     return 0;
@@ -83,13 +98,19 @@ int run(const RenderArgs& args) {
     outputs = {args.output};
   }
 
-  for (const auto& out : outputs) checkWritable(out);
+  if (group.isRoot())
+    for (const auto& out : outputs) checkWritable(out);
 
   const Vector2i& resolution = file.scene->camera().resolution();
   const bool splitsStrategies = !args.strategies.empty();
   const std::string componentOption = splitsStrategies ? "--strategies" : "--path-lengths";
   const std::filesystem::path componentDir = splitsStrategies ? args.strategies : args.pathLengths;
   std::unique_ptr<ComponentImages> components;
+  if (!componentDir.empty() && group.distributed())
+    throw VerityError("", componentOption,
+                      fmt::format("component images are rendered by one process; run without "
+                                  "mpirun (this job has {} ranks)",
+                                  group.size()));
   if (!componentDir.empty())
     components = makeComponentImages(componentOption, settings.type, settings.maxBounces,
                                      resolution, componentDir);
@@ -99,14 +120,19 @@ int run(const RenderArgs& args) {
   RenderOptions options;
   options.components = components.get();
   options.samplesPerPixel = args.spp > 0 ? args.spp : file.sampler->samplesPerPixel();
-  options.threads = args.threads;
+  options.threads = group.threadsPerRank(args.threads);
   options.seed = args.seed;
-  options.progress = isatty(STDERR_FILENO);
-  InterruptGuard interrupt;
+  options.progress = group.isRoot() && isatty(STDERR_FILENO);
+  InterruptGuard interrupt(/*alsoTerminate=*/group.distributed());
   options.cancel = &InterruptGuard::flag();
   file.sampler->setSeed(args.seed);
 
-  const RenderStats stats = render(*file.scene, *integrator, *file.sampler, film, options);
+  const RenderStats stats =
+      renderDistributed(group, *file.scene, *integrator, *file.sampler, film, options);
+  if (!group.isRoot()) return 0;
+  // A hidden hook for the MPI tests: the film's bits, which the image rounds to float.
+  if (std::getenv("VERITY_TEST_FILM_DIGEST"))
+    fmt::print(stderr, "verity: film digest {:016x}\n", film.digest());
 
   ImageChannels image = filmChannels(film, args.variance);
   image.attributes["verity:scene"] = args.scene;
@@ -114,15 +140,14 @@ int run(const RenderArgs& args) {
   image.attributes["verity:max_bounces"] = std::to_string(settings.maxBounces);
   image.attributes["verity:spp"] = std::to_string(stats.passes);
   image.attributes["verity:seed"] = std::to_string(args.seed);
+  if (group.distributed())
+    image.attributes["verity:processes"] =
+        fmt::format("{} MPI ranks, {} threads each; rank 0 on {}", group.size(), options.threads,
+                    group.hostName());
   if (stats.interrupted)
     image.attributes["verity:partial"] = fmt::format("interrupted after {} of {} samples per pixel",
                                                      stats.passes, options.samplesPerPixel);
-  for (const auto& out : outputs) {
-    if (lowerExtension(out) == ".exr")
-      writeExr(out, image);
-    else
-      writePng(out, image);
-  }
+  for (const auto& out : outputs) writeImage(out, image);
   if (components) {
     const RenderRecord record{args.scene,   settings.type, settings.maxBounces,
                               stats.passes, args.seed,     stats.interrupted};
@@ -131,10 +156,13 @@ int run(const RenderArgs& args) {
 
   const double seconds = std::max(stats.seconds, 1e-9);
   fmt::print(stderr,
-             "{}: {} spp, {}, {:.2f} s, {:.3g} samples/s, {:.3g} Mrays/s, {} invalid samples{}\n",
+             "{}: {} spp, {}, {:.2f} s, {:.3g} samples/s, {:.3g} Mrays/s, {} invalid samples{}{}\n",
              file.name, stats.passes, settings.type, stats.seconds, stats.samples / seconds,
              stats.rays / seconds / 1e6, stats.invalidSamples,
-             stats.invalidSamples ? " (excluded from the average)" : "");
+             stats.invalidSamples ? " (excluded from the average)" : "",
+             group.distributed() ? fmt::format(", {} ranks × {} thread{}", group.size(),
+                                               options.threads, options.threads == 1 ? "" : "s")
+                                 : "");
   if (stats.tracedNoRays)
     fmt::print(stderr,
                "the scene has no emitter and a black background: the image is black and "
@@ -155,13 +183,15 @@ int run(const RenderArgs& args) {
 
 }  // namespace
 
-void addRenderCommand(CLI::App& app) {
+void addRenderCommand(CLI::App& app, const ProcessGroup& group) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Render a DIRT-format JSON scene");
   cmd->add_option("scene", args->scene, "Scene file (.json)")->required();
   cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
+  cmd->add_option("--threads", args->threads,
+                  "Worker threads per process (default: all cores; under mpirun, the host's "
+                  "cores shared among its ranks)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--seed", args->seed, "Seed of the render's random numbers");
   cmd->add_option("--integrator", args->integrator, integratorTypeList());
@@ -183,7 +213,7 @@ void addRenderCommand(CLI::App& app) {
                 "Refuse a scene the loader warns about (an albedo above 1, a light emitting 0)");
   cmd->add_flag("--explain", args->explain,
                 "Print what the scene calls for (emitters, lobes, textures, strategies) and exit");
-  cmd->callback([args] { throw CLI::RuntimeError(run(*args)); });
+  cmd->callback([args, &group] { throw CLI::RuntimeError(run(*args, group)); });
 }
 
 }  // namespace verity

@@ -8,6 +8,7 @@
 #include "film/image_io.h"
 #include "validation/studies/npy_file.h"
 #include "validation/studies/relative_error.h"
+#include "validation/studies/run_distribution.h"
 #include "validation/studies/seeds.h"
 #include "validation/studies/study_scene.h"
 #include "validation/studies/timed_render.h"
@@ -26,7 +27,8 @@ std::string convergenceKey(const nlohmann::json& r) {
 }  // namespace
 
 StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
-                                  const std::function<void(const std::string&)>& log) {
+                                  const std::function<void(const std::string&)>& log,
+                                  const ProcessGroup& group) {
   if (config.budgetType != "spp" && config.budgetType != "time")
     throw VerityError("", "", "the budget is samples per pixel (--spp) or seconds (--time)");
   if (config.budgets.empty()) throw VerityError("", "", "no budget given");
@@ -67,72 +69,66 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
   for (int& t : threadCounts)
     if (t <= 0) t = std::max(1, machine.cores);
 
-  StudyProgress progress;
-  progress.total =
-      int(config.threads.size() * config.runs * config.budgets.size() * integrators.size());
+  std::vector<StudyRun> runs;
   for (size_t ti = 0; ti < config.threads.size(); ++ti)
     for (int run = 0; run < config.runs; ++run)
       for (double budget : config.budgets)
         for (const PreparedIntegrator& p : integrators) {
-          nlohmann::json record = recordHeader("convergence", config.scene, resolution, p.settings);
-          record.update({
+          nlohmann::json header = recordHeader("convergence", config.scene, resolution, p.settings);
+          header.update({
               {"threads", threadCounts[ti]},
               {"budget_type", config.budgetType},
               {"budget", budget},
               {"run", run},
           });
-          if (output.has(record)) {
-            ++progress.skipped;
-            continue;
-          }
-          const uint64_t seed = runSeed(p.settings.type, config.budgetType, budget, run);
-          Film film(resolution);
-          const bool byTime = config.budgetType == "time";
-          const TimedRender timed =
-              timedRender(file, *p.integrator, film, byTime ? 0 : int(std::lround(budget)),
-                          threadCounts[ti], seed, byTime ? budget : 0);
-          const ErrorStats error = compareToReference(film, reference);
-          record.update({
-              {"seed", seed},
-              {"spp", timed.stats.passes},
-              {"wall_seconds", timed.wallSeconds},
-              {"cpu_seconds", timed.cpuSeconds},
-              {"rays", timed.stats.rays},
-              {"invalid_samples", timed.stats.invalidSamples},
-              {"rel_mse", error.relMse},
-              {"rel_mse_epsilon", kRelEpsilon},
-              {"rel_variance", error.relVariance},
-              {"mean_variance", error.meanVariance},
-              {"efficiency", 1.0 / (error.relMse * timed.wallSeconds)},
-              {"reference", referencePath.string()},
-              {"reference_spp", attribute("verity:spp")},
-              {"reference_integrator", attribute("verity:integrator")},
-              {"reference_rel_mse", referenceOwnRelMse},
-          });
-          record.update(provenance(machine, revision));
-          if (config.errorImages && ti == 0 && run == 0 && budget == largestBudget) {
-            std::filesystem::create_directories(imageDir);
-            const std::filesystem::path npy =
-                imageDir / fmt::format("{}_{}_{}{}.npy", sceneName, p.settings.type, budget,
-                                       config.budgetType == "spp" ? "spp" : "s");
-            writeNpy(npy, relativeErrorImage(film, reference), film.width(), film.height());
-            record["error_image"] =
-                std::filesystem::relative(npy, config.output.parent_path().empty()
-                                                   ? std::filesystem::path(".")
-                                                   : config.output.parent_path())
-                    .string();
-          }
-          output.append(record);
-          ++progress.done;
-          if (log)
-            log(
-                fmt::format("[{}/{}] {} threads={} {}={} run={}: {} spp, {:.3f} s wall, {:.3f} s "
-                            "CPU, relMSE {:.4g}",
-                            progress.done + progress.skipped, progress.total, p.settings.type,
-                            threadCounts[ti], config.budgetType, budget, run, timed.stats.passes,
-                            timed.wallSeconds, timed.cpuSeconds, error.relMse));
+          runs.push_back(
+              {header, [&, ti, run, budget, &p = p](nlohmann::json& record) {
+                 const uint64_t seed = runSeed(p.settings.type, config.budgetType, budget, run);
+                 Film film(resolution);
+                 const bool byTime = config.budgetType == "time";
+                 const TimedRender timed =
+                     timedRender(file, *p.integrator, film, byTime ? 0 : int(std::lround(budget)),
+                                 threadCounts[ti], seed, byTime ? budget : 0);
+                 const ErrorStats error = compareToReference(film, reference);
+                 record.update({
+                     {"seed", seed},
+                     {"spp", timed.stats.passes},
+                     {"wall_seconds", timed.wallSeconds},
+                     {"cpu_seconds", timed.cpuSeconds},
+                     {"rays", timed.stats.rays},
+                     {"invalid_samples", timed.stats.invalidSamples},
+                     {"rel_mse", error.relMse},
+                     {"rel_mse_epsilon", kRelEpsilon},
+                     {"rel_variance", error.relVariance},
+                     {"mean_variance", error.meanVariance},
+                     {"efficiency", 1.0 / (error.relMse * timed.wallSeconds)},
+                     {"reference", referencePath.string()},
+                     {"reference_spp", attribute("verity:spp")},
+                     {"reference_integrator", attribute("verity:integrator")},
+                     {"reference_rel_mse", referenceOwnRelMse},
+                 });
+                 record.update(provenance(machine, revision));
+                 if (config.errorImages && ti == 0 && run == 0 && budget == largestBudget) {
+                   std::filesystem::create_directories(imageDir);
+                   const std::filesystem::path npy =
+                       imageDir / fmt::format("{}_{}_{}{}.npy", sceneName, p.settings.type, budget,
+                                              config.budgetType == "spp" ? "spp" : "s");
+                   writeNpy(npy, relativeErrorImage(film, reference), film.width(), film.height());
+                   record["error_image"] =
+                       std::filesystem::relative(npy, config.output.parent_path().empty()
+                                                          ? std::filesystem::path(".")
+                                                          : config.output.parent_path())
+                           .string();
+                 }
+                 return fmt::format(
+                     "{} threads={} {}={} run={}: {} spp, {:.3f} s wall, {:.3f} s "
+                     "CPU, relMSE {:.4g}",
+                     p.settings.type, threadCounts[ti], config.budgetType, budget, run,
+                     timed.stats.passes, timed.wallSeconds, timed.cpuSeconds, error.relMse);
+               }});
         }
-  return progress;
+  return executeRuns(group, *std::max_element(threadCounts.begin(), threadCounts.end()), output,
+                     runs, log);
 }
 
 }  // namespace verity::studies

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "distributed/process_group.h"
 #include "validation/studies/study_records.h"
 
 namespace verity::studies {
@@ -30,8 +31,10 @@ struct ConvergenceConfig {
 // Runs, in this order: for each thread count, run index, budget and integrator (integrators
 // alternate innermost so that a change in the machine's load hits them alike). Runs whose
 // key (scene, resolution, integrator, max bounces, threads, budget type, budget, run) is
-// already in the output are skipped. `log` gets one line per run.
+// already in the output are skipped. `log` gets one line per run. Over a distributed `group`
+// the runs are dealt to its ranks (validation/studies/run_distribution.h).
 StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
-                                  const std::function<void(const std::string&)>& log);
+                                  const std::function<void(const std::string&)>& log,
+                                  const ProcessGroup& group = ProcessGroup::solo());
 
 }  // namespace verity::studies

@@ -15,7 +15,7 @@
 
 namespace verity::studies {
 
-ReferenceResult makeReference(const ReferenceConfig& config) {
+ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup& group) {
   const SceneFile file = loadStudyScene(config.scene, config.resolution);
   const IntegratorSettings settings = studyIntegrator(file, config.integrator, config.maxBounces);
   const auto integrator = makeIntegrator(settings);
@@ -23,7 +23,10 @@ ReferenceResult makeReference(const ReferenceConfig& config) {
       config.seed ? config.seed : hashValues(hashString("reference"), hashString(file.name));
 
   Film film(file.scene->camera().resolution());
-  const TimedRender timed = timedRender(file, *integrator, film, config.spp, config.threads, seed);
+  const int threads = group.threadsPerRank(config.threads);
+  const TimedRender timed =
+      timedRender(file, *integrator, film, config.spp, threads, seed, 0, nullptr, group);
+  if (!group.isRoot()) return {};
 
   ImageChannels image = filmChannels(film, true);
   const double ownRelMse = referenceRelMse(image);
@@ -40,9 +43,15 @@ ReferenceResult makeReference(const ReferenceConfig& config) {
   std::filesystem::create_directories(config.directory);
   result.image = config.directory / (file.name + ".exr");
   result.sidecar = config.directory / (file.name + ".json");
+  if (group.distributed())
+    image.attributes["verity:processes"] = fmt::format(
+        "{} MPI ranks, {} threads each; rank 0 on {}", group.size(), threads, group.hostName());
   // Half floats: a relative rounding error of at most 2⁻¹¹ per value, so the quantisation
-  // adds at most about (2⁻¹¹)² ≈ 2.4e-7 to a measured relative MSE.
-  writeExr(result.image, image, /*halfFloat=*/true);
+  // adds at most about (2⁻¹¹)² ≈ 2.4e-7 to a measured relative MSE. Written under a temporary
+  // name and renamed when whole: a job killed meanwhile leaves no image that looks complete.
+  const std::filesystem::path writing = result.image.string() + ".writing";
+  writeExr(writing, image, /*halfFloat=*/true);
+  std::filesystem::rename(writing, result.image);
 
   result.metadata = {
       {"scene", file.name},
@@ -58,7 +67,8 @@ ReferenceResult makeReference(const ReferenceConfig& config) {
       {"cpu_seconds", timed.cpuSeconds},
       {"rays", timed.stats.rays},
       {"invalid_samples", timed.stats.invalidSamples},
-      {"threads", config.threads > 0 ? config.threads : machine.cores},
+      {"threads", threads > 0 ? threads : machine.cores},
+      {"ranks", group.size()},
       {"machine", toJson(machine)},
       {"revision", revision},
       {"created", timestamp()},
@@ -75,9 +85,13 @@ ReferenceResult makeReference(const ReferenceConfig& config) {
        "the reference's own estimated relative MSE: mean over pixels and channels of "
        "(variance / samples) / (mean^2 + epsilon); a study's relative MSE includes it"},
   };
-  std::ofstream out(result.sidecar);
-  if (!out) throw VerityError(result.sidecar.string(), "", "cannot write the sidecar");
-  out << result.metadata.dump(2) << '\n';
+  const std::filesystem::path sidecarWriting = result.sidecar.string() + ".writing";
+  {
+    std::ofstream out(sidecarWriting);
+    if (!out) throw VerityError(result.sidecar.string(), "", "cannot write the sidecar");
+    out << result.metadata.dump(2) << '\n';
+  }
+  std::filesystem::rename(sidecarWriting, result.sidecar);
   return result;
 }
 

@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "distributed/process_group.h"
+
 namespace verity::studies {
 
 struct ReferenceConfig {
@@ -27,7 +29,10 @@ struct ReferenceResult {
 // Writes <directory>/<scene>.exr (R, G, B means; variance.R/G/B, the variance of one sample;
 // samples; half floats, ZIP) and <directory>/<scene>.json: integrator, spp, seed, times,
 // threads, machine, source revision and the reference's own estimated relative MSE,
-// mean over pixels and channels of (variance / samples) / (mean² + ε).
-ReferenceResult makeReference(const ReferenceConfig& config);
+// mean over pixels and channels of (variance / samples) / (mean² + ε). Over a distributed
+// `group` the ranks share the passes (the image is the same bits) and rank 0 alone writes;
+// the other ranks get an empty result.
+ReferenceResult makeReference(const ReferenceConfig& config,
+                              const ProcessGroup& group = ProcessGroup::solo());
 
 }  // namespace verity::studies

@@ -7,7 +7,7 @@
 
 namespace verity {
 
-void addReferenceCommand(CLI::App& app) {
+void addReferenceCommand(CLI::App& app, const ProcessGroup& group) {
   auto config = std::make_shared<studies::ReferenceConfig>();
   CLI::App* cmd = app.add_subcommand(
       "reference",
@@ -20,15 +20,18 @@ void addReferenceCommand(CLI::App& app) {
   cmd->add_option("--max-bounces", config->maxBounces,
                   "Maximum scattering events per path (default: the scene's)")
       ->check(CLI::Range(0, kMaxBouncesLimit));
-  cmd->add_option("--threads", config->threads, "Worker threads (default: all cores)")
+  cmd->add_option("--threads", config->threads,
+                  "Worker threads per process (default: all cores; under mpirun, the host's "
+                  "cores shared among its ranks)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--resolution", config->resolution,
                   "Image width in pixels (the scene's aspect ratio is kept)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--dir", config->directory, "Output folder")->capture_default_str();
   cmd->add_option("--seed", config->seed, "Seed (default: derived from the scene's name)");
-  cmd->callback([config] {
-    const studies::ReferenceResult r = studies::makeReference(*config);
+  cmd->callback([config, &group] {
+    const studies::ReferenceResult r = studies::makeReference(*config, group);
+    if (!group.isRoot()) return;
     fmt::print(stderr, "{}: {} spp of {} at {}x{}, {:.2f} s; its own relative MSE {:.3g}\n",
                r.metadata["scene"].get<std::string>(), r.metadata["spp"].get<int>(),
                r.metadata["integrator"].get<std::string>(), r.metadata["width"].get<int>(),

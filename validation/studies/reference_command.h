@@ -3,8 +3,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include "distributed/process_group.h"
+
 namespace verity {
 
-void addReferenceCommand(CLI::App& app);
+// Under mpirun or srun the ranks of `group` share the passes; rank 0 writes.
+void addReferenceCommand(CLI::App& app, const ProcessGroup& group);
 
 }  // namespace verity

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "validation/studies/run_distribution.h"
 #include "validation/studies/seeds.h"
 #include "validation/studies/study_scene.h"
 #include "validation/studies/timed_render.h"
@@ -22,7 +23,8 @@ std::string speedupKey(const nlohmann::json& r) {
 }  // namespace
 
 StudyProgress runSpeedupStudy(const SpeedupConfig& config,
-                              const std::function<void(const std::string&)>& log) {
+                              const std::function<void(const std::string&)>& log,
+                              const ProcessGroup& group) {
   if (config.threads.empty()) throw VerityError("", "--threads", "no thread count given");
   const SceneFile file = loadStudyScene(config.scene, config.resolution);
   std::vector<PreparedIntegrator> integrators =
@@ -32,41 +34,36 @@ StudyProgress runSpeedupStudy(const SpeedupConfig& config,
   const std::string revision = sourceRevision();
   StudyOutput output(config.output, "speedup", speedupKey);
 
-  StudyProgress progress;
-  progress.total = int(config.repeats * integrators.size() * config.threads.size());
+  std::vector<StudyRun> runs;
   for (int repeat = 0; repeat < config.repeats; ++repeat) {
     std::vector<int> order = config.threads;
     if (repeat % 2) std::reverse(order.begin(), order.end());
     for (int threads : order)
       for (const PreparedIntegrator& p : integrators) {
-        nlohmann::json record = recordHeader("speedup", config.scene, resolution, p.settings);
-        record.update({{"threads", threads}, {"spp", config.spp}, {"repeat", repeat}});
-        if (output.has(record)) {
-          ++progress.skipped;
-          continue;
-        }
-        const uint64_t seed = runSeed(p.settings.type, "speedup", config.spp, 0);
-        Film film(resolution);
-        const TimedRender timed = timedRender(file, *p.integrator, film, config.spp, threads, seed);
-        record.update({
-            {"seed", seed},
-            {"wall_seconds", timed.wallSeconds},
-            {"cpu_seconds", timed.cpuSeconds},
-            {"rays", timed.stats.rays},
-        });
-        record.update(provenance(machine, revision));
-        output.append(record);
-        ++progress.done;
-        if (log)
-          log(
-              fmt::format("[{}/{}] {} threads={} repeat={}: {:.3f} s wall, {:.3f} s CPU, {:.3g} "
-                          "Mrays/s",
-                          progress.done + progress.skipped, progress.total, p.settings.type,
-                          threads, repeat, timed.wallSeconds, timed.cpuSeconds,
-                          timed.stats.rays / std::max(timed.wallSeconds, 1e-9) / 1e6));
+        nlohmann::json header = recordHeader("speedup", config.scene, resolution, p.settings);
+        header.update({{"threads", threads}, {"spp", config.spp}, {"repeat", repeat}});
+        runs.push_back(
+            {header, [&, threads, repeat, &p = p](nlohmann::json& record) {
+               const uint64_t seed = runSeed(p.settings.type, "speedup", config.spp, 0);
+               Film film(resolution);
+               const TimedRender timed =
+                   timedRender(file, *p.integrator, film, config.spp, threads, seed);
+               record.update({
+                   {"seed", seed},
+                   {"wall_seconds", timed.wallSeconds},
+                   {"cpu_seconds", timed.cpuSeconds},
+                   {"rays", timed.stats.rays},
+               });
+               record.update(provenance(machine, revision));
+               return fmt::format(
+                   "{} threads={} repeat={}: {:.3f} s wall, {:.3f} s CPU, {:.3g} Mrays/s",
+                   p.settings.type, threads, repeat, timed.wallSeconds, timed.cpuSeconds,
+                   timed.stats.rays / std::max(timed.wallSeconds, 1e-9) / 1e6);
+             }});
       }
   }
-  return progress;
+  return executeRuns(group, *std::max_element(config.threads.begin(), config.threads.end()), output,
+                     runs, log);
 }
 
 }  // namespace verity::studies

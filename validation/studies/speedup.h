@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "distributed/process_group.h"
 #include "validation/studies/study_records.h"
 
 namespace verity::studies {
@@ -25,8 +26,10 @@ struct SpeedupConfig {
 // backwards) within every repeat. Every render of an integrator uses the same seed, so all
 // do the same work (renders are bit-identical across thread counts). Runs whose key (scene,
 // resolution, integrator, max bounces, threads, spp, repeat) is already in the output are
-// skipped.
+// skipped. Over a distributed `group` the renders are dealt to its ranks
+// (validation/studies/run_distribution.h).
 StudyProgress runSpeedupStudy(const SpeedupConfig& config,
-                              const std::function<void(const std::string&)>& log);
+                              const std::function<void(const std::string&)>& log,
+                              const ProcessGroup& group = ProcessGroup::solo());
 
 }  // namespace verity::studies

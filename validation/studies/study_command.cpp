@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "core/error.h"
 #include "integrators/integrator_settings.h"
 #include "validation/studies/convergence.h"
 #include "validation/studies/json_lines.h"
@@ -22,7 +23,7 @@ void logLine(const std::string& line) {
   fmt::print(stderr, "{}\n", line);
 }
 
-void addConvergence(CLI::App& study) {
+void addConvergence(CLI::App& study, const ProcessGroup& group) {
   auto config = std::make_shared<studies::ConvergenceConfig>();
   auto spp = std::make_shared<std::vector<double>>();
   auto time = std::make_shared<std::vector<double>>();
@@ -61,7 +62,7 @@ void addConvergence(CLI::App& study) {
       ->check(CLI::Range(0, kMaxBouncesLimit));
   cmd->add_flag("--no-error-images", *noImages,
                 "Do not save relative-error images at the largest budget");
-  cmd->callback([=] {
+  cmd->callback([=, &group] {
     if (spp->empty() == time->empty())
       throw CLI::ValidationError("convergence", "give budgets with either --spp or --time");
     config->budgetType = spp->empty() ? "time" : "spp";
@@ -69,13 +70,14 @@ void addConvergence(CLI::App& study) {
     config->output = *output;
     config->reference = *reference;
     config->errorImages = !*noImages;
-    const studies::StudyProgress p = studies::runConvergenceStudy(*config, logLine);
+    const studies::StudyProgress p = studies::runConvergenceStudy(*config, logLine, group);
+    if (!group.isRoot()) return;
     fmt::print(stderr, "{} runs done, {} already in {}\n", p.done, p.skipped, *output);
     printSummary(*output);
   });
 }
 
-void addSpeedup(CLI::App& study) {
+void addSpeedup(CLI::App& study, const ProcessGroup& group) {
   auto config = std::make_shared<studies::SpeedupConfig>();
   auto output = std::make_shared<std::string>("speedup.jsonl");
   CLI::App* cmd = study.add_subcommand(
@@ -102,9 +104,10 @@ void addSpeedup(CLI::App& study) {
       ->check(CLI::Range(0, kMaxBouncesLimit));
   cmd->add_option("-o,--output", *output, "Results file (JSON Lines; appended to)")
       ->capture_default_str();
-  cmd->callback([=] {
+  cmd->callback([=, &group] {
     config->output = *output;
-    const studies::StudyProgress p = studies::runSpeedupStudy(*config, logLine);
+    const studies::StudyProgress p = studies::runSpeedupStudy(*config, logLine, group);
+    if (!group.isRoot()) return;
     fmt::print(stderr, "{} renders done, {} already in {}\n", p.done, p.skipped, *output);
     printSummary(*output);
   });
@@ -165,12 +168,17 @@ void addStrategies(CLI::App& study) {
 
 }  // namespace
 
-void addStudyCommand(CLI::App& app) {
+void addStudyCommand(CLI::App& app, const ProcessGroup& group) {
   CLI::App* study = app.add_subcommand("study", "Convergence, speed-up and BDPT strategy studies");
   study->require_subcommand(1);
-  addConvergence(*study);
-  addSpeedup(*study);
+  addConvergence(*study, group);
+  addSpeedup(*study, group);
   addStrategies(*study);
+  study->get_subcommand("strategies")->preparse_callback([&group](size_t) {
+    if (group.distributed())
+      throw VerityError("", "",
+                        "`verity study strategies` runs in one process; run it without mpirun");
+  });
 }
 
 }  // namespace verity

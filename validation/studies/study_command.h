@@ -4,8 +4,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include "distributed/process_group.h"
+
 namespace verity {
 
-void addStudyCommand(CLI::App& app);
+// Under mpirun or srun, convergence and speed-up runs are dealt to the ranks of `group` and
+// rank 0 writes the results; the strategies study runs in one process.
+void addStudyCommand(CLI::App& app, const ProcessGroup& group);
 
 }  // namespace verity

@@ -1,6 +1,7 @@
 #include "validation/studies/timed_render.h"
 
 #include <fmt/format.h>
+#include <mpi.h>
 
 #include <atomic>
 #include <chrono>
@@ -9,6 +10,8 @@
 #include <mutex>
 #include <thread>
 
+#include "core/error.h"
+#include "distributed/distributed_render.h"
 #include "validation/studies/seeds.h"
 #include "validation/studies/study_scene.h"
 
@@ -25,7 +28,10 @@ double cpuNow() {
 }  // namespace
 
 TimedRender timedRender(const SceneFile& file, const Integrator& integrator, Film& film, int spp,
-                        int threads, uint64_t seed, double timeLimit, ComponentImages* components) {
+                        int threads, uint64_t seed, double timeLimit, ComponentImages* components,
+                        const ProcessGroup& group) {
+  if (group.distributed() && timeLimit > 0)
+    throw VerityError("", "", "a time-limited render cannot be split over MPI ranks");
   RenderOptions options;
   options.components = components;
   options.threads = threads;
@@ -51,9 +57,13 @@ TimedRender timedRender(const SceneFile& file, const Integrator& integrator, Fil
       if (!cv.wait_for(lock, std::chrono::duration<double>(timeLimit), [&] { return done; }))
         cancel = true;
     });
-  out.stats = render(*file.scene, integrator, *sampler, film, options);
+  out.stats = renderDistributed(group, *file.scene, integrator, *sampler, film, options);
   out.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   out.cpuSeconds = cpuNow() - cpu0;
+  if (group.distributed()) {
+    const double own = out.cpuSeconds;
+    MPI_Reduce(&own, &out.cpuSeconds, 1, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
+  }
   if (watchdog.joinable()) {
     {
       std::lock_guard lock(m);

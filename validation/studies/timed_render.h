@@ -5,6 +5,7 @@
 #include <functional>
 #include <string>
 
+#include "distributed/process_group.h"
 #include "film/film.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
@@ -18,10 +19,13 @@ struct TimedRender {
 };
 // Renders spp samples per pixel, or, with timeLimit > 0, passes until timeLimit seconds have
 // passed (at least one pass; the last pass may overrun the limit). `components`, if given,
-// records the per-strategy or per-path-length images as well.
+// records the per-strategy or per-path-length images as well. Over a distributed `group`
+// (spp budgets only: a time limit would make the image depend on the ranks' speed) every
+// rank renders its share, rank 0's film holds the image and cpuSeconds is the job's.
 TimedRender timedRender(const SceneFile& file, const Integrator& integrator, Film& film, int spp,
                         int threads, uint64_t seed, double timeLimit = 0,
-                        ComponentImages* components = nullptr);
+                        ComponentImages* components = nullptr,
+                        const ProcessGroup& group = ProcessGroup::solo());
 
 // `batches` independent renders of `spp` samples per pixel with `integrator` (max bounces
 // `maxBounces`, the file's when negative), batch i seeded by hashString("<key> batch <i>");
