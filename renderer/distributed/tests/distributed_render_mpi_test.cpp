@@ -25,7 +25,10 @@ using mpi_testing::underMpirun;
 class DistributedRender : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / "verity_distributed_render_test";
+    // One folder per test: ctest -j runs them side by side.
+    dir_ = fs::temp_directory_path() /
+           (std::string("verity_distributed_render_test_") +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     // The shipped Cornell box at 40×30: edge tiles are partial.
