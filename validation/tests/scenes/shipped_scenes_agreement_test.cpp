@@ -14,6 +14,7 @@
 //     summed against the path tracer's length-k image, per tile and channel; its own Holm
 //     family at 1%.
 //   - Power. The image family must reject BDPT's images made 2% brighter.
+// One exclusion, measured: the light tracer on phong (lightTracerTooRare).
 // Tiles are estimated by batch means (batch_regions.h): splats correlate the pixels of a
 // pass, so per-pixel variances would understate a tile's. Seeds are fixed by the formula in
 // seedOf, written once and never tuned.
@@ -165,6 +166,19 @@ bool anyMaskedPixel(const SceneStatistics& s) {
   return std::any_of(m.samples.begin(), m.samples.end(), [](double n) { return n > 0; });
 }
 
+// Scenes where the light tracer's estimate of the masked pixels rests on events too rare for
+// this test's 320 spp: on phong, the background's reflection in the exponent-798 sphere needs a
+// light path leaving the environment's disk within the lobe's few hundredths of a radian. Its
+// batch means are then nowhere near normal: mostly low, with low spread. Measured on phong at
+// 32×13, light_tracer against path_tracer_mis (20,000 spp): 20,000 light-tracer spp read the
+// blue of pixel (7, 5) as 0.0451 against 0.0606 (t = 17); 200,000 read 0.0701 (t = −0.7), and
+// every rejected pixel likewise agreed. An unbiased but heavy-tailed estimate, so left out
+// rather than compared with a t-test whose assumption fails; the other integrators still meet
+// every other pair on this scene.
+bool lightTracerTooRare(const std::string& scene) {
+  return scene == "phong";
+}
+
 // The family of every pair's image comparisons, with BDPT's images scaled by `bdptGain`.
 ComparisonFamily imageFamily(const std::vector<SceneStatistics>& scenes, double bdptGain) {
   ComparisonFamily family(kFamilyWiseLevel);
@@ -178,7 +192,7 @@ ComparisonFamily imageFamily(const std::vector<SceneStatistics>& scenes, double 
             fmt::format("{}: {} / {}", s.name, kIntegrators[a], kIntegrators[b]);
         if (b != kLightTracer)
           family.add(name, statistics(s.image[a], a), statistics(s.image[b], b));
-        else if (anyMaskedPixel(s))
+        else if (anyMaskedPixel(s) && !lightTracerTooRare(s.name))
           family.add(name + ", masked", statistics(s.masked[a], a), s.masked[b]->statistics());
       }
   return family;
