@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "child_process.h"
 #include "test_directory.h"
+#include "testing/child_process.h"
 
 namespace verity {
 namespace {

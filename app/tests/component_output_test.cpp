@@ -8,9 +8,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "child_process.h"
 #include "film/image_io.h"
 #include "test_directory.h"
+#include "testing/child_process.h"
 
 namespace verity {
 namespace {

@@ -11,8 +11,8 @@
 #include <fstream>
 #include <thread>
 
-#include "child_process.h"
 #include "film/image_io.h"
+#include "testing/child_process.h"
 
 namespace verity {
 namespace {

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "child_process.h"
+#include "testing/child_process.h"
 
 namespace verity {
 namespace {

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "child_process.h"
 #include "test_directory.h"
+#include "testing/child_process.h"
 
 namespace verity {
 namespace {

@@ -6,9 +6,12 @@
 // every rank renders and rank 0 takes two chunks from itself and a short one from rank 1.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <signal.h>
 
 #include <chrono>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -148,7 +151,7 @@ TEST_F(DistributedRender, InterruptedJobWritesAConsistentPartialImage) {
       mpi_testing::spawn(underMpirun(3, renderArgs("path_tracer_nee", 1, partial, 1000000)), log);
   std::this_thread::sleep_for(std::chrono::seconds(6));
   kill(pid, SIGINT);
-  const auto job = mpi_testing::wait(pid, log);
+  const auto job = mpi_testing::finish(pid, log);
   ASSERT_TRUE(fs::exists(partial)) << "status " << job.status << "\n" << job.stderrText;
   const ImageChannels image = readExr(partial);
   ASSERT_TRUE(image.attributes.count("verity:partial"));

@@ -5,23 +5,19 @@
 // memory transport needs no container settings here.
 #pragma once
 
-#include <fcntl.h>
-#include <signal.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "testing/child_process.h"
+
 namespace verity::mpi_testing {
 
-struct Outcome {
-  int status = 0;  // exit status, or minus the signal that ended the process
-  std::string stderrText;
-};
+using testing::finish;
+using testing::Outcome;
+using testing::run;
+using testing::spawn;
 
 // `program` under mpirun with `ranks` ranks; `environment` ("NAME=value") is exported to them.
 inline std::vector<std::string> underMpirun(int ranks, const std::vector<std::string>& program,
@@ -35,44 +31,6 @@ inline std::vector<std::string> underMpirun(int ranks, const std::vector<std::st
   }
   args.insert(args.end(), program.begin(), program.end());
   return args;
-}
-
-// Starts `args` (args[0] is the program) with stderr to `stderrFile`.
-inline pid_t spawn(const std::vector<std::string>& args, const std::string& stderrFile) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int fd = open(stderrFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd >= 0) dup2(fd, STDERR_FILENO);
-    std::vector<char*> argv;
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
-  return pid;
-}
-
-inline Outcome wait(pid_t pid, const std::string& stderrFile) {
-  int status = 0;
-  waitpid(pid, &status, 0);
-  Outcome outcome;
-  outcome.status = WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
-  std::stringstream text;
-  text << std::ifstream(stderrFile).rdbuf();
-  outcome.stderrText = text.str();
-  return outcome;
-}
-
-inline std::string stderrFile() {
-  return (std::filesystem::temp_directory_path() /
-          ("verity_mpi_stderr_" + std::to_string(getpid()) + ".txt"))
-      .string();
-}
-
-// Runs to completion and collects stderr.
-inline Outcome run(const std::vector<std::string>& args) {
-  const std::string file = stderrFile();
-  return wait(spawn(args, file), file);
 }
 
 }  // namespace verity::mpi_testing

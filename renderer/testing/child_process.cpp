@@ -1,4 +1,4 @@
-#include "child_process.h"
+#include "testing/child_process.h"
 
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -32,15 +32,20 @@ int waitExit(pid_t pid) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
 }
 
-Outcome run(const std::vector<std::string>& args) {
-  const auto file = std::filesystem::temp_directory_path() /
-                    ("verity_stderr_" + std::to_string(getpid()) + ".txt");
+Outcome finish(pid_t pid, const std::string& stderrFile) {
   Outcome outcome;
-  outcome.status = waitExit(spawn(args, file.string()));
+  outcome.status = waitExit(pid);
   std::stringstream text;
-  text << std::ifstream(file).rdbuf();
+  text << std::ifstream(stderrFile).rdbuf();
   outcome.stderrText = text.str();
   return outcome;
+}
+
+Outcome run(const std::vector<std::string>& args) {
+  const std::string file = (std::filesystem::temp_directory_path() /
+                            ("verity_stderr_" + std::to_string(getpid()) + ".txt"))
+                               .string();
+  return finish(spawn(args, file), file);
 }
 
 }  // namespace verity::testing

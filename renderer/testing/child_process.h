@@ -1,4 +1,5 @@
-// Runs the `verity` program as a child process for tests of the command line.
+// Runs the `verity` program as a child process, for the tests of the command line and of
+// mpirun (test support only: linked into test executables, never into the program).
 #pragma once
 
 #include <sys/types.h>
@@ -17,6 +18,8 @@ struct Outcome {
   int status = 0;
   std::string stderrText;
 };
+// Waits for a child started with its stderr going to `stderrFile`, and collects that.
+Outcome finish(pid_t pid, const std::string& stderrFile);
 // Runs to completion and collects stderr.
 Outcome run(const std::vector<std::string>& args);
 
