@@ -23,10 +23,27 @@ void logLine(const std::string& line) {
   fmt::print(stderr, "{}\n", line);
 }
 
+// --spp or --time: the budgets of a study, one list or the other.
+struct Budgets {
+  std::shared_ptr<std::vector<double>> spp = std::make_shared<std::vector<double>>();
+  std::shared_ptr<std::vector<double>> time = std::make_shared<std::vector<double>>();
+  std::string type() const { return time->empty() ? "spp" : "time"; }
+  const std::vector<double>& values() const { return time->empty() ? *spp : *time; }
+};
+
+Budgets addBudgetOptions(CLI::App* cmd, const std::string& sppHelp) {
+  Budgets b;
+  CLI::Option* sppOption = cmd->add_option("--spp", *b.spp, sppHelp)->delimiter(',');
+  CLI::Option* timeOption =
+      cmd->add_option("--time", *b.time, "Budgets in seconds of wall time, comma-separated")
+          ->delimiter(',');
+  sppOption->excludes(timeOption);
+  timeOption->excludes(sppOption);
+  return b;
+}
+
 void addConvergence(CLI::App& study, const ProcessGroup& group) {
   auto config = std::make_shared<studies::ConvergenceConfig>();
-  auto spp = std::make_shared<std::vector<double>>();
-  auto time = std::make_shared<std::vector<double>>();
   auto output = std::make_shared<std::string>("results.jsonl");
   auto reference = std::make_shared<std::string>();
   auto noImages = std::make_shared<bool>(false);
@@ -41,14 +58,7 @@ void addConvergence(CLI::App& study, const ProcessGroup& group) {
   cmd->add_option("--runs", config->runs, "Independent runs per integrator and budget")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  CLI::Option* sppOption =
-      cmd->add_option("--spp", *spp, "Budgets in samples per pixel, comma-separated")
-          ->delimiter(',');
-  CLI::Option* timeOption =
-      cmd->add_option("--time", *time, "Budgets in seconds of wall time, comma-separated")
-          ->delimiter(',');
-  sppOption->excludes(timeOption);
-  timeOption->excludes(sppOption);
+  const Budgets budgets = addBudgetOptions(cmd, "Budgets in samples per pixel, comma-separated");
   cmd->add_option("--threads", config->threads,
                   "Thread counts, comma-separated (0: all cores; default 0)")
       ->delimiter(',');
@@ -63,10 +73,10 @@ void addConvergence(CLI::App& study, const ProcessGroup& group) {
   cmd->add_flag("--no-error-images", *noImages,
                 "Do not save relative-error images at the largest budget");
   cmd->callback([=, &group] {
-    if (spp->empty() == time->empty())
+    if (budgets.values().empty())
       throw CLI::ValidationError("convergence", "give budgets with either --spp or --time");
-    config->budgetType = spp->empty() ? "time" : "spp";
-    config->budgets = spp->empty() ? *time : *spp;
+    config->budgetType = budgets.type();
+    config->budgets = budgets.values();
     config->output = *output;
     config->reference = *reference;
     config->errorImages = !*noImages;
@@ -115,8 +125,6 @@ void addSpeedup(CLI::App& study, const ProcessGroup& group) {
 
 void addStrategies(CLI::App& study) {
   auto config = std::make_shared<studies::StrategiesConfig>();
-  auto spp = std::make_shared<std::vector<double>>();
-  auto time = std::make_shared<std::vector<double>>();
   auto reference = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>("strategies.jsonl");
   auto noImages = std::make_shared<bool>(false);
@@ -126,14 +134,8 @@ void addStrategies(CLI::App& study) {
       "image and the relative variance of its weighted and unweighted images, beside BDPT's "
       "and a path tracer's path-length images");
   cmd->add_option("scene", config->scene, "Scene file (.json)")->required();
-  CLI::Option* sppOption =
-      cmd->add_option("--spp", *spp, "Budgets in samples per pixel, comma-separated (default 64)")
-          ->delimiter(',');
-  CLI::Option* timeOption =
-      cmd->add_option("--time", *time, "Budgets in seconds of wall time, comma-separated")
-          ->delimiter(',');
-  sppOption->excludes(timeOption);
-  timeOption->excludes(sppOption);
+  const Budgets budgets =
+      addBudgetOptions(cmd, "Budgets in samples per pixel, comma-separated (default 64)");
   cmd->add_option("--runs", config->runs, "Independent runs per budget")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
@@ -155,8 +157,8 @@ void addStrategies(CLI::App& study) {
   cmd->add_flag("--no-images", *noImages,
                 "Do not save the weighted strategy images at the largest budget");
   cmd->callback([=] {
-    config->budgetType = time->empty() ? "spp" : "time";
-    if (!spp->empty() || !time->empty()) config->budgets = time->empty() ? *spp : *time;
+    config->budgetType = budgets.type();
+    if (!budgets.values().empty()) config->budgets = budgets.values();
     config->reference = *reference;
     config->output = *output;
     config->images = !*noImages;
