@@ -74,13 +74,8 @@ int run(const RenderArgs& args, const ProcessGroup& group) {
     throw VerityError(
         args.scene, "",
         fmt::format("{} warning(s), and --strict makes them errors", file.warnings.size()));
-  IntegratorSettings settings = file.integrator;
-  if (!args.integrator.empty()) {
-    settings.type = canonicalIntegratorType(args.integrator);
-    if (settings.type.empty())
-      throw VerityError("", "--integrator", "unknown integrator type \"" + args.integrator + "\"");
-  }
-  if (args.maxBounces >= 0) settings.maxBounces = args.maxBounces;
+  IntegratorSettings settings =
+      overrideIntegrator(file.integrator, args.integrator, args.maxBounces, "--integrator");
   if (args.explain) {
     if (!group.isRoot()) return 0;
     fmt::print("{}", file.scene->summary().explain());

@@ -4,9 +4,18 @@
 
 namespace verity {
 
-std::string canonicalIntegratorType(const std::string& type) {
-  const IntegratorType* t = findIntegratorType(type);
-  return t ? t->name : "";
+IntegratorSettings overrideIntegrator(IntegratorSettings settings, const std::string& type,
+                                      int maxBounces, const std::string& option) {
+  if (!type.empty()) {
+    const IntegratorType* t = findIntegratorType(type);
+    if (!t)
+      throw VerityError(
+          "", option,
+          "unknown integrator type \"" + type + "\" (expected " + integratorTypeList() + ")");
+    settings.type = t->name;
+  }
+  if (maxBounces >= 0) settings.maxBounces = maxBounces;
+  return settings;
 }
 
 IntegratorSettings parseIntegratorSettings(const JsonNode* node) {

@@ -25,8 +25,11 @@ struct IntegratorSettings {
   BdptStrategy bdptDroppedStrategy;
 };
 
-// Canonical name of an integrator type in any accepted spelling, or "" when unknown.
-std::string canonicalIntegratorType(const std::string& type);
+// `settings` with the type (any accepted spelling; "" keeps it) and max bounces (if ≥ 0)
+// overridden, as a command line asks; an unknown type is an error naming `option` and the
+// known types.
+IntegratorSettings overrideIntegrator(IntegratorSettings settings, const std::string& type,
+                                      int maxBounces, const std::string& option);
 // Reads the scene's "integrator" object (null: the defaults).
 IntegratorSettings parseIntegratorSettings(const JsonNode* node);
 std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& settings);

@@ -53,14 +53,7 @@ std::string shippedSceneName(const std::filesystem::path& file) {
 }
 
 IntegratorSettings studyIntegrator(const SceneFile& file, const std::string& type, int maxBounces) {
-  IntegratorSettings settings = file.integrator;
-  if (!type.empty()) {
-    settings.type = canonicalIntegratorType(type);
-    if (settings.type.empty())
-      throw VerityError("", "--integrator", "unknown integrator type \"" + type + "\"");
-  }
-  if (maxBounces >= 0) settings.maxBounces = maxBounces;
-  return settings;
+  return overrideIntegrator(file.integrator, type, maxBounces, "--integrator");
 }
 
 }  // namespace verity::studies
