@@ -113,7 +113,8 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
                    const std::filesystem::path npy =
                        imageDir / fmt::format("{}_{}_{}{}.npy", sceneName, p.settings.type, budget,
                                               config.budgetType == "spp" ? "spp" : "s");
-                   writeNpy(npy, relativeErrorImage(film, reference), film.width(), film.height());
+                   writeHalfNpy(npy, relativeErrorImage(film, reference),
+                                {size_t(film.height()), size_t(film.width())});
                    record["error_image"] =
                        std::filesystem::relative(npy, config.output.parent_path().empty()
                                                           ? std::filesystem::path(".")

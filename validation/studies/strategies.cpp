@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -64,11 +63,10 @@ ComponentRender renderComponents(const SceneFile& file, const Integrator& integr
   return r;
 }
 
-// The weighted strategy images, in the record's order, as float16 (height, width, RGB)
-// planes: the pyramid figure needs no more precision, and the file is half the size.
+// The weighted strategy images, in the record's order, as (height, width, RGB) planes.
 void writeStrategyImages(const std::filesystem::path& npy, const ComponentImages& components) {
   const ComponentLayout& layout = components.layout();
-  std::vector<uint16_t> data;
+  std::vector<float> data;
   size_t images = 0;
   for (int i = 0; i < layout.size(); ++i) {
     if (!layout[i].weighted) continue;
@@ -76,14 +74,12 @@ void writeStrategyImages(const std::filesystem::path& npy, const ComponentImages
     for (int y = 0; y < film.height(); ++y)
       for (int x = 0; x < film.width(); ++x) {
         const Color3 m = film.mean(x, y);
-        for (int c = 0; c < 3; ++c)
-          data.push_back(Eigen::numext::bit_cast<uint16_t>(Eigen::half(m[c])));
+        for (int c = 0; c < 3; ++c) data.push_back(m[c]);
       }
     ++images;
   }
   const Film& first = components.film(0);
-  writeNpy(npy, data.data(), data.size() * sizeof(uint16_t), "<f2",
-           {images, size_t(first.height()), size_t(first.width()), 3});
+  writeHalfNpy(npy, data, {images, size_t(first.height()), size_t(first.width()), 3});
 }
 
 }  // namespace
