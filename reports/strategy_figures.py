@@ -12,6 +12,7 @@ all against r_k, BDPT's length-k image (validation/studies/strategies.h). This m
 """
 import math
 import os
+import sys
 import statistics
 
 import matplotlib
@@ -115,6 +116,9 @@ def plot_pyramid(key, rs, out_dir, name):
     r = max(with_images, key=lambda r: (r["budget"], -r["run"]))
     path = os.path.join(r["_dir"], r["strategy_images"])
     if not os.path.exists(path):
+        # The images are large (11 MB per 256² scene) and not committed with the records.
+        print(f"note: no strategy pyramid for {key[0]}: {path} is missing (rerun the "
+              f"strategies study's largest budget to make it)", file=sys.stderr)
         return None
     images = np.load(path).astype(np.float32)  # (strategies, height, width, RGB)
     order = {(st["s"], st["t"]): i for i, st in enumerate(r["strategies"])}
