@@ -545,11 +545,17 @@ def main():
     more_figures, more_tables = strategy_figures.add(records, args.out)
     figures += more_figures
     tbls += more_tables
+    # The report opens with what a reader acts on: the time to accuracy, then which BDPT
+    # strategy carries which light (the pyramid); the other figures close it.
+    leading = [fc for fc in figures if fc[0].startswith("strategy_pyramid")]
+    figures = [fc for fc in figures if fc not in leading]
     accuracy = accuracy_table(summary)
     md = ["# Verity study report", "", meta, "", meta_runs, ""]
     if accuracy:
         title, header, rows, note = accuracy
         md += [f"## {title}", "", markdown_table(header, rows), "", note, ""]
+    for name, caption in leading:
+        md += ["## BDPT strategies, by path length", "", f"![{caption}]({name})", "", caption, ""]
     found = findings(summary, records)
     if found:
         md += ["## Findings", ""] + found + [""]
@@ -574,6 +580,9 @@ def main():
         title, header, rows, note = accuracy
         parts.append(f"<h2>{html.escape(title)}</h2>" + html_table(header, rows)
                      + f"<p>{html.escape(note)}</p>")
+    for name, caption in leading:
+        parts.append(f"<h2>BDPT strategies, by path length</h2><figure><img src='{name}'>"
+                     f"<figcaption>{html.escape(caption)}</figcaption></figure>")
     if found:
         parts.append("<h2>Findings</h2><ul>" + "".join(
             f"<li>{html.escape(f[2:]).replace('**', '')}</li>" for f in found) + "</ul>")
