@@ -88,7 +88,7 @@ std::optional<Point2d> BsdfSubject::sample(pcg32& rng, Audit& audit) const {
     }
   }
   if (setup_.checkReciprocity) checkPair(wo, audit);
-  return sphereCoords(frame_.toWorld(wo));
+  return sphereCoords(frame_.toWorld(wo).cast<double>());
 }
 
 void BsdfSubject::checkPair(const Vector3f& wo, Audit& audit) const {
@@ -135,8 +135,8 @@ std::vector<double> BsdfSubject::breakpointsY(double phi) const {
 
 std::vector<Point2d> BsdfSubject::peaks() const {
   const Vector3d wi = wiLocal_.cast<double>();
-  std::vector<Point2d> out{
-      sphereCoords(frame_.toWorld(Vector3d(-wi.x(), -wi.y(), wi.z()).cast<float>()))};
+  std::vector<Point2d> out{sphereCoords(
+      frame_.toWorld(Vector3d(-wi.x(), -wi.y(), wi.z()).cast<float>()).cast<double>())};
   if (ior_ != 1) {
     // Snell's law about the shading normal, from wi's side.
     const double eta = wi.z() > 0 ? ior_ : 1 / ior_;  // far over near
@@ -145,7 +145,7 @@ std::vector<Point2d> BsdfSubject::peaks() const {
       const double cosT = std::sqrt(1 - sin2T);
       Vector3d t = -wi / eta;
       t.z() = wi.z() > 0 ? -cosT : cosT;
-      out.push_back(sphereCoords(frame_.toWorld(t.normalized().cast<float>())));
+      out.push_back(sphereCoords(frame_.toWorld(t.normalized().cast<float>()).cast<double>()));
     }
   }
   return out;

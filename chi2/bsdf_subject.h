@@ -12,7 +12,7 @@
 #include <atomic>
 #include <memory>
 
-#include "chi2/subject.h"
+#include "chi2/core/subject.h"
 #include "core/frame.h"
 #include "materials/material.h"
 

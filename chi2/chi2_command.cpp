@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "chi2/figure.h"
-#include "chi2/significance.h"
 #include "chi2/suite.h"
+#include "chi2/suite_significance.h"
 
 namespace verity {
 
@@ -52,6 +52,7 @@ int runOne(const Chi2Args& a) {
   chi2::TestOptions o;
   o.samples = a.samples;
   o.seed = a.seed;
+  o.significance = chi2::perTestSignificance();
   const chi2::TestResult r = chi2::runSamplingTest(subject, o);
   printResult(r);
   if (subject.deltaSamples() > 0)
@@ -99,6 +100,7 @@ int seedTable(const Chi2Args& a) {
       chi2::TestOptions o;
       o.samples = a.samples;
       o.seed = chi2::seedFromName(std::string("seed_table_") + row.name + sampling);
+      o.significance = chi2::perTestSignificance();
       const chi2::TestResult r = chi2::runSamplingTest(subject, o);
       failures += !r.passed();
       std::cout << fmt::format(

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "chi2/sampling_check.h"
+#include "chi2/core/sampling_check.h"
 
 namespace verity::chi2 {
 

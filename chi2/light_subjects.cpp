@@ -142,7 +142,7 @@ class LightSubject : public Subject {
                    fmt::format("direction ({}, {}, {}) with pdf {}", d.x(), d.y(), d.z(), pdf));
       return std::nullopt;
     }
-    return sphereCoords(d);
+    return sphereCoords(d.cast<double>());
   }
 
   void collectEdges() {

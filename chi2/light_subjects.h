@@ -7,7 +7,8 @@
 #include <memory>
 #include <string>
 
-#include "chi2/subject.h"
+#include "chi2/core/subject.h"
+#include "core/math.h"
 
 namespace verity::chi2 {
 

@@ -4,7 +4,7 @@
 
 #include <numbers>
 
-#include "chi2/quadrature.h"
+#include "chi2/core/quadrature.h"
 
 namespace verity::chi2 {
 

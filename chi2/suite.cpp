@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "chi2/suite_significance.h"
 #include "materials/material_factory.h"
 #include "materials/named_conductors.h"
 #include "scene/json_node.h"
@@ -247,6 +248,7 @@ TestOptions optionsFor(const std::string& name) {
   TestOptions o;
   o.samples = kSamples;
   o.seed = seedFromName(name);
+  o.significance = perTestSignificance();
   return o;
 }
 

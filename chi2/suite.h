@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "chi2/bsdf_subject.h"
+#include "chi2/core/sampling_check.h"
 #include "chi2/light_subjects.h"
 #include "chi2/microfacet_checks.h"
-#include "chi2/sampling_check.h"
 #include "chi2/warp_subjects.h"
 
 namespace verity::chi2::suite {

@@ -53,7 +53,7 @@ std::optional<Point2d> directionSample(const Vector3f& v, Audit& audit) {
                  fmt::format("sampled direction ({}, {}, {})", v.x(), v.y(), v.z()));
     return std::nullopt;
   }
-  return sphereCoords(v);
+  return sphereCoords(v.cast<double>());
 }
 
 std::optional<Point2d> pointSample(const Point2f& p, Audit& audit) {

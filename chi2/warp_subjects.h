@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "chi2/subject.h"
+#include "chi2/core/subject.h"
 #include "materials/microfacet.h"
 
 namespace verity::chi2 {

@@ -9,9 +9,10 @@
 #include <fstream>
 
 #include "chi2/bsdf_subject.h"
+#include "chi2/core/sampling_check.h"
 #include "chi2/microfacet_checks.h"
-#include "chi2/sampling_check.h"
 #include "chi2/suite.h"
+#include "chi2/suite_significance.h"
 #include "failure_figure.h"
 #include "reference_ggx.h"
 
@@ -33,6 +34,7 @@ TestResult run(Flaw flaw, float ior, double incidence, bool inside, const std::s
   TestOptions o;
   o.samples = suite::kSamples;
   o.seed = seedFromName("broken_" + name);
+  o.significance = perTestSignificance();
   return runSamplingTest(subject, o);
 }
 

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "chi2/sampling_check.h"
+#include "chi2/core/sampling_check.h"
 
 namespace verity::chi2::testing {
 

@@ -3,12 +3,12 @@
 
 #include <numbers>
 
-#include "chi2/chi_square.h"
-#include "chi2/domain.h"
-#include "chi2/integral_check.h"
-#include "chi2/quadrature.h"
-#include "chi2/significance.h"
+#include "chi2/core/chi_square.h"
+#include "chi2/core/domain.h"
+#include "chi2/core/integral_check.h"
+#include "chi2/core/quadrature.h"
 #include "chi2/suite.h"
+#include "chi2/suite_significance.h"
 
 namespace verity::chi2 {
 

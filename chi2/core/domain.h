@@ -10,8 +10,6 @@
 #include <utility>
 #include <vector>
 
-#include "core/math.h"
-
 namespace verity::chi2 {
 
 using Point2d = Eigen::Vector2d;
@@ -47,9 +45,9 @@ Domain squareDomain(int cells);
 Domain diskDomain(int cells);
 Domain triangleDomain(int cells);
 
-// Sphere parameterisation and its inverse (unit vectors; the inverse normalises in double).
+// Sphere parameterisation and its inverse (unit vectors; the inverse normalises).
 Vector3d sphereDirection(double phi, double z);
-Point2d sphereCoords(const Vector3f& v);
+Point2d sphereCoords(const Vector3d& v);
 // The cos θ values at azimuth φ where a direction meets the cone ω·axis = cosAngle (none,
 // one or two; a great circle when cosAngle = 0): where a density bounded by that cone jumps.
 std::vector<double> coneCrossings(const Vector3d& axis, double cosAngle, double phi);

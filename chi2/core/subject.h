@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "chi2/audit.h"
-#include "chi2/domain.h"
+#include "audit.h"
+#include "domain.h"
 
 namespace verity::chi2 {
 

@@ -1,4 +1,4 @@
-#include "chi2/sampling_check.h"
+#include "sampling_check.h"
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
@@ -7,8 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <mutex>
-
-#include "chi2/significance.h"
+#include <stdexcept>
 
 namespace verity::chi2 {
 
@@ -23,7 +22,13 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   TestResult r;
   r.subject = subject.describe();
   r.domain = subject.domain();
-  r.significance = options.significance > 0 ? options.significance : perTestSignificance();
+  if (!(options.significance > 0 && options.significance < 1))
+    throw std::invalid_argument(fmt::format(
+        "the per-test significance level must be in (0, 1), not {}", options.significance));
+  if (options.samples < 1)
+    throw std::invalid_argument(
+        fmt::format("the number of samples must be at least 1, not {}", options.samples));
+  r.significance = options.significance;
   r.samples = options.samples;
   const Domain& d = r.domain;
   const int cells = d.cells();

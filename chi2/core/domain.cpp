@@ -1,4 +1,4 @@
-#include "chi2/domain.h"
+#include "domain.h"
 
 #include <cmath>
 #include <numbers>
@@ -73,8 +73,8 @@ double wrapAzimuth(double phi) {
 }
 }  // namespace
 
-Point2d sphereCoords(const Vector3f& v) {
-  const Vector3d d = v.cast<double>().normalized();
+Point2d sphereCoords(const Vector3d& v) {
+  const Vector3d d = v.normalized();
   return {wrapAzimuth(std::atan2(d.y(), d.x())), std::clamp(d.z(), -1.0, 1.0)};
 }
 

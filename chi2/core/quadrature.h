@@ -8,7 +8,7 @@
 #include <functional>
 #include <vector>
 
-#include "chi2/domain.h"
+#include "domain.h"
 
 namespace verity::chi2 {
 

@@ -1,4 +1,4 @@
-#include "chi2/chi_square.h"
+#include "chi_square.h"
 
 #include <fmt/format.h>
 

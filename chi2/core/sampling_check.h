@@ -7,18 +7,20 @@
 #include <string>
 #include <vector>
 
-#include "chi2/audit.h"
-#include "chi2/chi_square.h"
-#include "chi2/integral_check.h"
-#include "chi2/quadrature.h"
-#include "chi2/subject.h"
+#include "audit.h"
+#include "chi_square.h"
+#include "integral_check.h"
+#include "quadrature.h"
+#include "subject.h"
 
 namespace verity::chi2 {
 
 struct TestOptions {
   long long samples = 1'000'000;
   uint64_t seed = 1;
-  double significance = 0;  // per-test level; 0 means perTestSignificance()
+  // The per-test level, in (0, 1): the caller corrects for its own number of tests (e.g.
+  // sidakLevel() in significance.h). runSamplingTest refuses any other value.
+  double significance = 0;
   QuadratureOptions quadrature;
   double integralTolerance = kIntegralTolerance;
 };

@@ -1,4 +1,4 @@
-#include "chi2/audit.h"
+#include "audit.h"
 
 #include <fmt/format.h>
 

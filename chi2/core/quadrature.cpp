@@ -1,4 +1,4 @@
-#include "chi2/quadrature.h"
+#include "quadrature.h"
 
 #include <tbb/parallel_for.h>
 

@@ -1,4 +1,4 @@
-#include "chi2/integral_check.h"
+#include "integral_check.h"
 
 #include <fmt/format.h>
 
