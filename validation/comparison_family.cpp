@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "validation/comparison_report.h"
-#include "validation/power.h"
+#include "validation/stats/power.h"
 
 namespace verity::validation {
 

@@ -7,7 +7,7 @@
 #include <numeric>
 
 #include "core/error.h"
-#include "validation/power.h"
+#include "validation/stats/power.h"
 
 namespace verity::validation {
 

@@ -27,11 +27,11 @@
 #include <string>
 #include <vector>
 
-#include "validation/holm.h"
-#include "validation/kolmogorov_smirnov.h"
 #include "validation/pixel_statistics.h"
+#include "validation/stats/holm.h"
+#include "validation/stats/kolmogorov_smirnov.h"
+#include "validation/stats/welch_t.h"
 #include "validation/tile_pooling.h"
-#include "validation/welch_t.h"
 
 namespace verity::validation {
 

@@ -15,7 +15,7 @@
 #pragma once
 
 #include "validation/pixel_statistics.h"
-#include "validation/welch_t.h"
+#include "validation/stats/welch_t.h"
 
 namespace verity::validation {
 

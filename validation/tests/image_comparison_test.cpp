@@ -11,7 +11,7 @@
 #include "core/error.h"
 #include "synthetic_images.h"
 #include "validation/comparison_report.h"
-#include "validation/power.h"
+#include "validation/stats/power.h"
 
 namespace verity::validation {
 namespace {

@@ -1,4 +1,4 @@
-#include "validation/holm.h"
+#include "holm.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "validation/power.h"
+#include "power.h"
 
 #include <algorithm>
 #include <boost/math/distributions/normal.hpp>

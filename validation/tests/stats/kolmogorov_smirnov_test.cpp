@@ -1,6 +1,6 @@
 // The KS statistic by hand, the Kolmogorov distribution against its tabulated quantiles, and
 // the test's behaviour on uniform and non-uniform draws (fixed seeds).
-#include "validation/kolmogorov_smirnov.h"
+#include "validation/stats/kolmogorov_smirnov.h"
 
 #include <gtest/gtest.h>
 

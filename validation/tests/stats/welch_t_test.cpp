@@ -1,6 +1,6 @@
 // Welch's test against values computed by hand from its definition (Welch 1947;
 // Satterthwaite 1946) and against printed critical values of Student's t.
-#include "validation/welch_t.h"
+#include "validation/stats/welch_t.h"
 
 #include <gtest/gtest.h>
 

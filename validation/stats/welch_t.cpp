@@ -1,4 +1,4 @@
-#include "validation/welch_t.h"
+#include "welch_t.h"
 
 #include <boost/math/distributions/students_t.hpp>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "validation/kolmogorov_smirnov.h"
+#include "kolmogorov_smirnov.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Holm's procedure against examples worked by hand from its definition (Holm 1979): reject
 // H_(1..k−1) where k is the first index with p_(k) > α/(m − k + 1).
-#include "validation/holm.h"
+#include "validation/stats/holm.h"
 
 #include <gtest/gtest.h>
 
