@@ -6,6 +6,12 @@
 
 namespace verity::chi2 {
 
+const char* defectName(Defect d) {
+  static const char* names[] = {"non-finite value", "negative value", "weight != eval*cos/pdf",
+                                "sample pdf != pdf()", "reciprocity"};
+  return names[static_cast<int>(d)];
+}
+
 bool relativelyClose(double a, double b, double rel) {
   return std::fabs(a - b) <= rel * (std::max(std::fabs(a), std::fabs(b)) + kAbsoluteFloor);
 }
@@ -29,13 +35,12 @@ bool Audit::clean() const {
 }
 
 std::string Audit::describe() const {
-  static const char* names[] = {"non-finite value", "negative value", "weight != eval*cos/pdf",
-                                "sample pdf != pdf()", "reciprocity"};
   if (clean()) return "per-sample checks: clean";
   std::string s = "per-sample checks FAILED:";
   for (int i = 0; i < static_cast<int>(Defect::Count); ++i)
     if (counts_[i])
-      s += fmt::format("\n    {}: {} time(s), first: {}", names[i], counts_[i], examples_[i]);
+      s += fmt::format("\n    {}: {} time(s), first: {}", defectName(static_cast<Defect>(i)),
+                       counts_[i], examples_[i]);
   return s;
 }
 

@@ -22,6 +22,9 @@ inline constexpr double kReciprocityTolerance = 1e-3;  // relative
 // Values below this are compared absolutely (weights and densities are O(1) or larger).
 inline constexpr double kAbsoluteFloor = 1e-6;
 
+// What each defect is called in reports ("weight != eval*cos/pdf", ...).
+const char* defectName(Defect d);
+
 // |a − b| ≤ rel · max(|a|, |b|) + floor·rel
 bool relativelyClose(double a, double b, double rel);
 

@@ -1,6 +1,7 @@
 #include "check_result.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 

@@ -30,7 +30,9 @@ bool isDirectional(WarpDomain domain) {
 }
 
 WarpSubject::WarpSubject(std::string name, WarpModel model, int resolution)
-    : name_(std::move(name)), model_(std::move(model)), domain_(domainOf(model_.domain, resolution)) {}
+    : name_(std::move(name)),
+      model_(std::move(model)),
+      domain_(domainOf(model_.domain, resolution)) {}
 
 double WarpSubject::pdf(double x, double y) const {
   return model_.pdf(isDirectional(model_.domain) ? sphereDirection(x, y) : Vector3d(x, y, 0));
