@@ -51,13 +51,17 @@ std::optional<Point2f> Camera::filmPosition(const Point3f& lensPoint, const Vect
   return filmFromCameraSpace(toCameraPoint(lensPoint), toCameraDirection(d));
 }
 
+float Camera::importanceOf(const Vector3f& dir) const {
+  const float cos2 = dir.z() * dir.z();
+  return 1.0f / (imagePlaneArea() * lensArea() * cos2 * cos2);
+}
+
 float Camera::importance(const Point3f& lensPoint, const Vector3f& d, Point2f* film) const {
   const Vector3f dir = toCameraDirection(d);
   const auto position = filmFromCameraSpace(toCameraPoint(lensPoint), dir);
   if (!position) return 0;
   if (film) *film = *position;
-  const float cos2 = dir.z() * dir.z();
-  return 1.0f / (imagePlaneArea() * lensArea() * cos2 * cos2);
+  return importanceOf(dir);
 }
 
 void Camera::pdfImportance(const Point3f& lensPoint, const Vector3f& d, float* pdfPos,
@@ -70,13 +74,15 @@ void Camera::pdfImportance(const Point3f& lensPoint, const Vector3f& d, float* p
   *pdfDir = 1.0f / (imagePlaneArea() * cosTheta * cosTheta * cosTheta);
 }
 
+Point3f Camera::sampleLens(const Point2f& u) const {
+  if (!(lensRadius_ > 0)) return Point3f::Zero();
+  const Point2f l = lensRadius_ * warp::squareToUniformDiskConcentric(u);
+  return Point3f(l.x(), l.y(), 0);
+}
+
 std::optional<CameraImportanceSample> Camera::sampleImportance(const Point3f& ref,
                                                                const Point2f& u) const {
-  Point3f lens = Point3f::Zero();
-  if (lensRadius_ > 0) {
-    const Point2f l = lensRadius_ * warp::squareToUniformDiskConcentric(u);
-    lens = Point3f(l.x(), l.y(), 0);
-  }
+  const Point3f lens = sampleLens(u);
   CameraImportanceSample s;
   s.lensPoint = toWorld_.point(lens);
   const Vector3f toLens = s.lensPoint - ref;
@@ -88,9 +94,25 @@ std::optional<CameraImportanceSample> Camera::sampleImportance(const Point3f& re
   if (!film) return std::nullopt;
   s.film = *film;
   const float cosTheta = -dir.z();
-  const float cos2 = cosTheta * cosTheta;
-  s.importance = 1.0f / (imagePlaneArea() * lensArea() * cos2 * cos2);
+  s.importance = importanceOf(dir);
   s.pdf = s.distance * s.distance / (cosTheta * lensArea());
+  if (!std::isfinite(s.pdf) || !std::isfinite(s.importance)) return std::nullopt;
+  return s;
+}
+
+std::optional<CameraImportanceSample> Camera::sampleImportanceFromInfinity(
+    const Vector3f& towardsEnvironment, const Point2f& u) const {
+  const Point3f lens = sampleLens(u);
+  const Vector3f dir = toCameraDirection(towardsEnvironment);
+  const auto film = filmFromCameraSpace(lens, dir);
+  if (!film) return std::nullopt;
+  CameraImportanceSample s;
+  s.lensPoint = toWorld_.point(lens);
+  s.wi = -towardsEnvironment.normalized();
+  s.distance = kInfinity;
+  s.film = *film;
+  s.importance = importanceOf(dir);
+  s.pdf = 1.0f / (-dir.z() * lensArea());
   if (!std::isfinite(s.pdf) || !std::isfinite(s.importance)) return std::nullopt;
   return s;
 }

@@ -56,6 +56,12 @@ class Camera {
   // ray misses the image. The pdf is per solid angle at ref: distance² / (cos θ · lensArea).
   std::optional<CameraImportanceSample> sampleImportance(const Point3f& ref,
                                                          const Point2f& u) const;
+  // The same for light arriving from infinity, travelling along -towardsEnvironment (an
+  // emitting background seen directly). The distance is infinite and the pdf is per unit area
+  // perpendicular to the direction: 1 / (cos θ · lensArea), the limit of the solid-angle
+  // density above times distance⁻² (the convention of path_vertex.h at infinity).
+  std::optional<CameraImportanceSample> sampleImportanceFromInfinity(
+      const Vector3f& towardsEnvironment, const Point2f& u) const;
 
  private:
   Transform toWorld_;
@@ -69,6 +75,10 @@ class Camera {
   // World points, and world directions as unit vectors, in camera space.
   Point3f toCameraPoint(const Point3f& p) const { return toCameraLinear_ * p + toCameraOffset_; }
   Vector3f toCameraDirection(const Vector3f& d) const { return (toCameraLinear_ * d).normalized(); }
+  // A lens point in camera space, uniform on the lens (the origin for a pinhole).
+  Point3f sampleLens(const Point2f& u) const;
+  // We of the camera-space unit direction `dir` (camera-space cos θ = −dir.z()).
+  float importanceOf(const Vector3f& dir) const;
   // The film position that camera-space unit direction `dir` reaches from camera-space lens
   // point `lens` (film plane at distance 1).
   std::optional<Point2f> filmFromCameraSpace(const Point3f& lens, const Vector3f& dir) const;

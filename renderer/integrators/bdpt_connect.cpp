@@ -90,4 +90,23 @@ Color3 cameraContribution(const Scene& scene, Sampler& sampler,
   return contribution;
 }
 
+Color3 backgroundCameraContribution(const Scene& scene, Sampler& sampler,
+                                    const std::vector<PathVertex>& light, Point2f& film,
+                                    PathStats& stats) {
+  const Point2f u = sampler.next2D();
+  const PathVertex& origin = light[0];
+  if (!origin.atInfinity()) return Color3::Zero();
+  const auto cs = scene.camera().sampleImportanceFromInfinity(origin.w, u);
+  if (!cs) return Color3::Zero();
+  // As in cameraContribution, with the geometry term towards infinity reduced to the lens
+  // cosine, which cs->pdf (per area perpendicular to the direction) holds.
+  const Color3 contribution =
+      origin.beta * emittedRadiance(origin, origin.w) * cs->importance / cs->pdf;
+  if (isBlack(contribution)) return Color3::Zero();
+  ++stats.rays;
+  if (scene.occluded(Ray(cs->lensPoint, origin.w))) return Color3::Zero();
+  film = cs->film;
+  return contribution;
+}
+
 }  // namespace verity

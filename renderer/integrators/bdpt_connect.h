@@ -31,4 +31,13 @@ Color3 cameraContribution(const Scene& scene, Sampler& sampler,
                           const std::vector<PathVertex>& light, int s, PathVertex& sampled,
                           Point2f& film, PathStats& stats);
 
+// t = 1 with s = 1 at infinity: a light subpath that starts on the environment, connected to
+// a point on the lens along its own direction (the background seen directly). The lens point
+// is chosen for that direction; the position on the film goes to `film`. Only the light
+// tracer uses it: bidirectional path tracing finds the background seen directly with its
+// camera subpaths (s = 0), and its MIS weights treat this strategy as impossible.
+Color3 backgroundCameraContribution(const Scene& scene, Sampler& sampler,
+                                    const std::vector<PathVertex>& light, Point2f& film,
+                                    PathStats& stats);
+
 }  // namespace verity

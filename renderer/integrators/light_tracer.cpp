@@ -13,7 +13,12 @@ Color3 LightTracer::Li(const Scene& scene, Sampler& sampler, const Ray&,
   for (int s = 1; s <= static_cast<int>(light.size()); ++s) {
     PathVertex lens;
     Point2f film;
-    const Color3 c = cameraContribution(scene, sampler, light, s, lens, film, context.stats);
+    // The background seen directly has no surface point to connect from: its ray to the lens
+    // is chosen along the direction the subpath started with.
+    const bool background = s == 1 && light[0].atInfinity();
+    const Color3 c = background
+                         ? backgroundCameraContribution(scene, sampler, light, film, context.stats)
+                         : cameraContribution(scene, sampler, light, s, lens, film, context.stats);
     if (isBlack(c)) continue;
     context.splat(film, resolution, c);
     // Strategy (s, 1) alone: its weight is one.

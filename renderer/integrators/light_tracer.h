@@ -6,8 +6,10 @@
 // with the camera's importance normalised over the image plane.
 //
 // It estimates exactly the light whose first surface seen from the camera is not a pure
-// delta surface: it cannot see emitters at infinity directly (the background stays black
-// where it is seen directly), nor anything seen only in a mirror or through smooth glass.
+// delta surface, and the emitting background where the camera sees it directly: a light
+// subpath that starts on the environment (from a disk bounding the scene, pbrt-v3 §16.1.5)
+// is also connected to the lens along its own direction. It cannot see anything seen only in
+// a mirror or through smooth glass.
 // Bounces are counted as in every integrator: a light path of s vertices connected to the
 // camera has s − 1 bounces, at most max_bounces.
 #pragma once
