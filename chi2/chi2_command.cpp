@@ -13,6 +13,21 @@ namespace verity {
 
 namespace {
 
+// The exit statuses of `verity chi2`, one per verdict, and one for input it cannot use.
+constexpr int kPassed = 0, kFailed = 1, kBadInput = 2, kInconclusive = 3;
+
+int exitStatus(chi2::Verdict verdict) {
+  switch (verdict) {
+    case chi2::Verdict::Passed:
+      return kPassed;
+    case chi2::Verdict::Failed:
+      return kFailed;
+    case chi2::Verdict::Inconclusive:
+      return kInconclusive;
+  }
+  return kFailed;
+}
+
 struct Chi2Args {
   std::string material;
   double incoming = 0;
@@ -62,7 +77,7 @@ int runOne(const Chi2Args& a) {
     const std::string figure = chi2::writeFigure(r, a.output);
     std::cout << "  wrote " << figure << " (histogram in " << a.output << ".json)\n";
   }
-  return r.passed() ? 0 : 1;
+  return exitStatus(r.verdict());
 }
 
 // The seed report's sample test (shared/seed/final-project-report.txt §3.3): alpha 0.3,
@@ -119,7 +134,10 @@ int seedTable(const Chi2Args& a) {
 void addChi2Command(CLI::App& app) {
   auto args = std::make_shared<Chi2Args>();
   CLI::App* cmd = app.add_subcommand(
-      "chi2", "Chi-square test of one material's sampling (or the seed report's table)");
+      "chi2",
+      "Chi-square test of one material's sampling (or the seed report's table); exit status 0 "
+      "PASSED, 1 FAILED, 2 bad input, 3 INCONCLUSIVE (a check could not run with its stated "
+      "power: the reason is printed)");
   cmd->add_option("--material", args->material, "the material as JSON, e.g. '{\"type\":\"ggx\"}'");
   cmd->add_option("--incoming", args->incoming, "incidence angle from +z in degrees")
       ->check(CLI::Range(0.0, 90.0));
@@ -134,8 +152,13 @@ void addChi2Command(CLI::App& app) {
   cmd->callback([args] {
     if (!args->seedTable && args->material.empty())
       throw CLI::RequiredError("--material (or --seed-table)");
-    const int status = args->seedTable ? seedTable(*args) : runOne(*args);
-    if (status != 0) throw CLI::RuntimeError(status);
+    int status = kBadInput;
+    try {
+      status = args->seedTable ? seedTable(*args) : runOne(*args);
+    } catch (const std::exception& e) {
+      fmt::print(stderr, "verity: error: {}\n", e.what());
+    }
+    if (status != kPassed) throw CLI::RuntimeError(status);
   });
 }
 

@@ -74,7 +74,8 @@ nlohmann::json figureData(const TestResult& r) {
   const ChiSquareResult& c = r.chiSquare;
   nlohmann::json j;
   j["subject"] = r.subject;
-  j["passed"] = r.passed();
+  j["verdict"] = verdictName(r.verdict());
+  j["inconclusive_reason"] = r.inconclusiveReason();
   j["samples"] = r.samples;
   j["valid"] = r.valid;
   j["outside"] = r.outside;
@@ -94,9 +95,13 @@ nlohmann::json figureData(const TestResult& r) {
                      {"degenerate", c.degenerate},      {"regular_cells", c.regularCells},
                      {"pooled_cells", c.pooledCells},   {"outright_samples", c.outrightSamples},
                      {"outright_cell", c.outrightCell}, {"description", c.describe()}};
-  j["integral"] = {{"passed", r.integral.passed},       {"integral", r.integral.integral},
-                   {"lower", r.integral.lower},         {"upper", r.integral.upper},
-                   {"tolerance", r.integral.tolerance}, {"description", r.integral.describe()}};
+  j["integral"] = {{"passed", r.integral.passed},
+                   {"integral", r.integral.integral},
+                   {"lower", r.integral.lower},
+                   {"upper", r.integral.upper},
+                   {"tolerance", r.integral.tolerance},
+                   {"description", r.integral.describe()},
+                   {"quadrature_error", r.quadratureError}};
   j["audit"] = {{"passed", r.audit.clean()}, {"description", r.audit.describe()}};
   return j;
 }

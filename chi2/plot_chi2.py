@@ -44,7 +44,7 @@ def title(d):
     else:
         p = "p < 1e-308 (underflow)"
     lines = [part for line in d["subject"].splitlines() for part in textwrap.wrap(line, 110)]
-    lines[0] = f"{'PASSED' if d['passed'] else 'FAILED'}: {lines[0]}"
+    lines[0] = f"{d['verdict']}: {lines[0]}"
     lines.append(
         f"chi-square {p} against the level {d['significance']:.3g} "
         f"(X² = {chi['statistic']:.1f}, {chi['dof']} dof): {verdict(chi['passed'])}"
@@ -54,6 +54,8 @@ def title(d):
         f"[{integral['lower']:.6f}, {integral['upper']:.6f}] ± {integral['tolerance']:.0e}: "
         f"{verdict(integral['passed'])}    per-sample audit: {verdict(d['audit']['passed'])}"
     )
+    if d["inconclusive_reason"]:
+        lines += textwrap.wrap(f"inconclusive: {d['inconclusive_reason']}", 110)
     extra = [f"{d['valid']:,} of {d['samples']:,} samples valid"]
     if chi["pooled_cells"]:
         extra.append(f"{chi['pooled_cells']} cells expecting < 5 pooled")
@@ -136,7 +138,8 @@ def main():
     bar.ax.set_yticklabels([f"{t:g}" for t in difference_ticks(limit)])
     bar.set_label(f"standard deviations (linear within ±{LINEAR_SIGMAS:g}, log beyond)")
 
-    fig.suptitle(title(d), fontsize=10, color="black" if d["passed"] else "darkred")
+    colour = {"PASSED": "black", "FAILED": "darkred", "INCONCLUSIVE": "darkorange"}[d["verdict"]]
+    fig.suptitle(title(d), fontsize=10, color=colour)
     fig.savefig(sys.argv[2], dpi=100)
 
 

@@ -101,8 +101,49 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
     r.expected[i] = total > 0 ? r.valid * r.probability[i] / total : 0.0;
   r.chiSquare = chiSquareTest(r.expected, r.observed, outrightThreshold(r.significance, cells));
   r.integral = checkIntegral(total, r.samples, r.valid, r.significance, options.integralTolerance);
+  r.integralTolerance = options.integralTolerance;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
+}
+
+std::string verdictName(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::Passed:
+      return "PASSED";
+    case Verdict::Failed:
+      return "FAILED";
+    case Verdict::Inconclusive:
+      return "INCONCLUSIVE";
+  }
+  return "?";
+}
+
+std::string TestResult::inconclusiveReason() const {
+  if (!audit.clean() || outside > 0) return {};
+  if (!quadratureHolds())
+    return fmt::format(
+        "the quadrature's error estimate {:.2e} exceeds the stated tolerance {:.1e}, so the "
+        "expected counts and the pdf integral cannot be trusted",
+        quadratureError, integralTolerance);
+  if (!chiSquarePassed() || !integral.passed) return {};
+  if (valid == 0)
+    return fmt::format(
+        "no valid sample among {}: the sampler declined every one (or returned "
+        "only delta lobes), so there was nothing to histogram",
+        samples);
+  if (chiSquare.degenerate)
+    return fmt::format(
+        "only {} cell(s) expect at least 5 of the {} valid samples after "
+        "pooling: the chi-square test needs two",
+        chiSquare.regularCells, valid);
+  return {};
+}
+
+Verdict TestResult::verdict() const {
+  if (!audit.clean() || outside > 0) return Verdict::Failed;
+  if (!inconclusiveReason().empty()) return Verdict::Inconclusive;
+  if (!chiSquarePassed() || !integral.passed) return Verdict::Failed;
+  return Verdict::Passed;
 }
 
 std::string TestResult::report() const {
@@ -113,7 +154,9 @@ std::string TestResult::report() const {
   s += fmt::format("  [{}] {} (quadrature error estimate {:.2e})\n",
                    integral.passed ? "pass" : "FAIL", integral.describe(), quadratureError);
   s += fmt::format("  [{}] {}\n", audit.clean() ? "pass" : "FAIL", audit.describe());
-  s += fmt::format("  {} in {:.2f} s", passed() ? "PASSED" : "FAILED", seconds);
+  const std::string reason = inconclusiveReason();
+  if (!reason.empty()) s += fmt::format("  inconclusive: {}\n", reason);
+  s += fmt::format("  {} in {:.2f} s", verdictName(verdict()), seconds);
   return s;
 }
 

@@ -25,6 +25,13 @@ struct TestOptions {
   double integralTolerance = kIntegralTolerance;
 };
 
+// What a sampling test concluded. PASSED only when every check ran with the power it
+// states; INCONCLUSIVE when a check could not run that way (its reason is named), so that a
+// test never passes having checked nothing and never fails because of its own arithmetic.
+enum class Verdict { Passed, Failed, Inconclusive };
+
+std::string verdictName(Verdict verdict);  // "PASSED", "FAILED", "INCONCLUSIVE"
+
 struct TestResult {
   std::string subject;
   Domain domain;
@@ -40,8 +47,21 @@ struct TestResult {
   Audit audit;
   double seconds = 0;
 
+  double integralTolerance = 0;  // the stated quadrature tolerance on ∫pdf
+
   bool chiSquarePassed() const { return outside == 0 && chiSquare.passed(significance); }
-  bool passed() const { return chiSquarePassed() && integral.passed && audit.clean(); }
+  // The cell probabilities are as accurate as the integral check states: the summed error
+  // estimate lies within its tolerance. Otherwise the expected counts, the pdf integral and
+  // every verdict drawn from them are the quadrature's, not the sampler's.
+  bool quadratureHolds() const { return quadratureError <= integralTolerance; }
+  // FAILED on a defect that needs no quadrature (a per-sample defect, a sample outside the
+  // support); else INCONCLUSIVE when the quadrature does not hold; else FAILED on the
+  // chi-square or pdf-integral test; else INCONCLUSIVE when no valid sample was drawn or
+  // too few cells expect enough samples for the chi-square test; else PASSED.
+  Verdict verdict() const;
+  // Why the verdict is INCONCLUSIVE; empty otherwise.
+  std::string inconclusiveReason() const;
+  bool passed() const { return verdict() == Verdict::Passed; }
   std::string report() const;
 };
 

@@ -50,11 +50,12 @@ TEST(FrameworkFigure, DataHoldsTheHistogramByRowsAndTheVerdicts) {
   EXPECT_EQ(j["chi_square"]["passed"], true);
   EXPECT_EQ(j["integral"]["passed"], true);
   EXPECT_EQ(j["audit"]["passed"], true);
-  EXPECT_EQ(j["passed"], true);
+  EXPECT_EQ(j["verdict"], "PASSED");
+  EXPECT_EQ(j["inconclusive_reason"], "");
   TestResult strict = smallResult(d);
   strict.significance = 0.6;
   EXPECT_EQ(figureData(strict)["chi_square"]["passed"], false);
-  EXPECT_EQ(figureData(strict)["passed"], false);
+  EXPECT_EQ(figureData(strict)["verdict"], "FAILED");
 }
 
 TEST(FrameworkFigure, AxesAreNamedFromTheDomain) {

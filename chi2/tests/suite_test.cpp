@@ -23,10 +23,12 @@ std::string caseName(const ::testing::TestParamInfo<Case>& info) {
   return info.param.name;
 }
 
-// A failing configuration's message names its figure (failure_figure.h).
+// A failing configuration's message names its figure (failure_figure.h). An inconclusive
+// one fails the suite too: the suite claims every configuration was tested.
 void expectPassed(const TestResult& r) {
   if (r.passed()) return;
   const std::string message = r.report() + "\n" + testing::failureFigure(r);
+  EXPECT_EQ(r.inconclusiveReason(), "") << message;
   EXPECT_TRUE(r.chiSquarePassed()) << message;
   EXPECT_TRUE(r.integral.passed) << message;
   EXPECT_TRUE(r.audit.clean()) << message;
