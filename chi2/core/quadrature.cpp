@@ -18,10 +18,16 @@ namespace {
 // recursion tolerates only a fraction of the piece's own integral, which a piece a few ulps
 // wide, or a density evaluated in single precision (a staircase at fine scales), never
 // meets: each such piece would be refined to the maximum depth.
+//
+// Boost reports a finite interval's error |K15 − G7| on the rule's own interval [−1, 1], not
+// multiplied by the half-width (b − a)/2 as the integral is (Boost 1.74-1.83,
+// recursive_adaptive_integrate): on [0, 0.02], √x gets an estimate of 6.6e-5 against a true
+// error of 3.8e-8. The refinement below compares those unscaled figures, as it was tuned to;
+// what it reports, `errorSum`, is scaled to the integral's own units.
 double bisect(const std::function<double(double)>& f, double a, double b, double value,
               double error, double tolerancePerWidth, unsigned depth, double* errorSum) {
   if (depth == 0 || error <= tolerancePerWidth * (b - a)) {
-    *errorSum += error;
+    *errorSum += error * (b - a) / 2;
     return value;
   }
   const double m = 0.5 * (a + b);
@@ -37,7 +43,7 @@ double bisect(const std::function<double(double)>& f, double a, double b, double
   const bool noise = e0 + e1 > 0.8 * error && std::min(e0, e1) > 0.25 * std::max(e0, e1) &&
                      std::fabs(v0 + v1 - value) <= 2 * error;
   if (noise) {
-    *errorSum += e0 + e1;
+    *errorSum += (e0 + e1) * (b - a) / 4;
     return v0 + v1;
   }
   return bisect(f, a, m, v0, e0, tolerancePerWidth, depth - 1, errorSum) +

@@ -88,6 +88,22 @@ TEST(FrameworkQuadrature, DiskAndTriangleSupports) {
   EXPECT_NEAR(total, 1.0, 1e-6);
 }
 
+TEST(FrameworkQuadrature, ErrorEstimateIsInTheIntegralsUnits) {
+  // √x on [0, w]: the square-root edge keeps the Gauss–Kronrod difference far from zero, so
+  // the estimate must bound the true error; and, being in the integral's units, it shrinks
+  // with the interval like the error does (w^1.5), instead of staying at the rule's
+  // [−1, 1] figure.
+  for (double w : {2.0, 0.02, 2e-4}) {
+    double error = 0;
+    const double value = integrate1D([](double x) { return std::sqrt(x); }, 0, w, {}, &error);
+    const double truth = 2.0 / 3 * std::pow(w, 1.5);
+    const double trueError = std::fabs(value - truth);
+    EXPECT_GE(error, trueError) << "w = " << w;
+    EXPECT_LE(error, 1e-6 * truth)
+        << "w = " << w << ": estimate " << error << ", true error " << trueError;
+  }
+}
+
 TEST(FrameworkDomain, ConeTangentPointsBoundTheConesAzimuths) {
   // A cone of half-angle 20° about an axis 50° from the pole: its tangent points lie on the
   // cone, meridians just inside them cross it twice and meridians just outside never.
