@@ -6,7 +6,10 @@
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <ImfStringAttribute.h>
+#include <fmt/format.h>
 #include <stb_image_write.h>
+
+#include <cmath>
 
 #include "core/error.h"
 #include "textures/image_texture.h"
@@ -40,7 +43,39 @@ ImageChannels filmChannels(const Film& film, bool withVariance) {
   return image;
 }
 
+namespace {
+
+bool storedAsHalf(const std::string& plane, bool halfFloat) {
+  return halfFloat && plane != "samples";
+}
+
+// Refuses the first value a half-float plane would store as Inf (or a NaN it would keep).
+void checkHalfRange(const std::filesystem::path& file, const ImageChannels& image) {
+  for (const auto& [name, plane] : image.planes) {
+    if (!storedAsHalf(name, true)) continue;
+    for (size_t i = 0; i < plane.size(); ++i)
+      if (!(std::fabs(plane[i]) <= kHalfFloatMax))
+        throw VerityError(file.string(), "",
+                          fmt::format("channel {} at pixel ({}, {}) holds {}, beyond the range of "
+                                      "half floats (±{})",
+                                      name, i % size_t(image.width), i / size_t(image.width),
+                                      plane[i], kHalfFloatMax));
+  }
+}
+
+}  // namespace
+
+bool fitsHalfFloat(const ImageChannels& image) {
+  for (const auto& [name, plane] : image.planes) {
+    if (!storedAsHalf(name, true)) continue;
+    for (float v : plane)
+      if (!(std::fabs(v) <= kHalfFloatMax)) return false;
+  }
+  return true;
+}
+
 void writeExr(const std::filesystem::path& file, const ImageChannels& image, bool halfFloat) {
+  if (halfFloat) checkHalfRange(file, image);
   try {
     Imf::Header header(image.width, image.height);
     header.compression() = Imf::ZIP_COMPRESSION;
@@ -50,8 +85,7 @@ void writeExr(const std::filesystem::path& file, const ImageChannels& image, boo
     std::vector<std::vector<half>> halves;
     halves.reserve(image.planes.size());
     for (const auto& [name, plane] : image.planes) {
-      // Sample counts stay exact in full float.
-      const bool asHalf = halfFloat && name != "samples";
+      const bool asHalf = storedAsHalf(name, halfFloat);
       header.channels().insert(name, Imf::Channel(asHalf ? Imf::HALF : Imf::FLOAT));
       if (asHalf) {
         halves.emplace_back(plane.begin(), plane.end());

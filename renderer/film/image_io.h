@@ -23,8 +23,15 @@ struct ImageChannels {
 // variance / samples.
 ImageChannels filmChannels(const Film& film, bool withVariance);
 
+// With `halfFloat`, every plane but "samples" (counts stay exact in 32-bit floats) is stored
+// as 16-bit floats; a value beyond their range (|v| > 65504, or NaN) is refused with an error
+// rather than written as Inf.
 void writeExr(const std::filesystem::path& file, const ImageChannels& image,
               bool halfFloat = false);
+// The largest value the 16-bit float planes of writeExr can hold.
+inline constexpr float kHalfFloatMax = 65504.0f;
+// Whether writeExr(..., halfFloat = true) can store every value of `image`.
+bool fitsHalfFloat(const ImageChannels& image);
 ImageChannels readExr(const std::filesystem::path& file);
 // Gain 1, exact sRGB curve, clamp, no tone mapping.
 void writePng(const std::filesystem::path& file, const ImageChannels& image);

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "film/image_io.h"
 #include "validation/studies/npy_file.h"
+#include "validation/studies/reference_match.h"
 #include "validation/studies/relative_error.h"
 #include "validation/studies/run_distribution.h"
 #include "validation/studies/seeds.h"
@@ -29,11 +30,7 @@ std::string convergenceKey(const nlohmann::json& r) {
 StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
                                   const std::function<void(const std::string&)>& log,
                                   const ProcessGroup& group) {
-  if (config.budgetType != "spp" && config.budgetType != "time")
-    throw VerityError("", "", "the budget is samples per pixel (--spp) or seconds (--time)");
-  if (config.budgets.empty()) throw VerityError("", "", "no budget given");
-  for (double b : config.budgets)
-    if (!(b > 0)) throw VerityError("", "", fmt::format("budgets must be positive, not {}", b));
+  checkBudgets(config.budgetType, config.budgets);
 
   const std::string sceneName = config.scene.stem().string();
   const std::filesystem::path referencePath =
@@ -56,6 +53,7 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
   std::vector<PreparedIntegrator> integrators =
       prepareIntegrators(file, config.integrators, config.maxBounces);
   const Vector2i resolution = file.scene->camera().resolution();
+  checkReferenceMatches(referencePath, reference, config.scene, resolution, config.force, log);
 
   const MachineInfo machine = machineInfo();
   const std::string revision = sourceRevision();

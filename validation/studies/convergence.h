@@ -23,11 +23,14 @@ struct ConvergenceConfig {
   std::filesystem::path output = "results.jsonl";
   int resolution = 0;  // image width; 0: the reference's
   int maxBounces = -1;
+  // Use a reference that records another scene (never one of another resolution).
+  bool force = false;
   // Saves the relative error image (.npy next to the output) of run 0 of each integrator at
   // the largest budget and the first thread count, for the report's false-colour images.
   bool errorImages = true;
 };
 
+// Refuses a reference of another scene (unless `force`) or resolution before rendering.
 // Runs, in this order: for each thread count, run index, budget and integrator (integrators
 // alternate innermost so that a change in the machine's load hits them alike). Runs whose
 // key (scene, resolution, integrator, max bounces, threads, budget type, budget, run) is

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "core/error.h"
@@ -14,6 +15,23 @@
 #include "validation/studies/timed_render.h"
 
 namespace verity::studies {
+
+namespace {
+
+// A reference with an infinite mean or variance (beyond 32-bit floats) would make every
+// error measured against it meaningless.
+void checkFinite(const ImageChannels& image, const std::filesystem::path& file) {
+  for (const auto& [name, plane] : image.planes)
+    for (size_t i = 0; i < plane.size(); ++i)
+      if (!std::isfinite(plane[i]))
+        throw VerityError(
+            file.string(), "",
+            fmt::format("channel {} at pixel ({}, {}) is {}: the reference's "
+                        "values exceed 32-bit floats; refusing to write it",
+                        name, i % size_t(image.width), i / size_t(image.width), plane[i]));
+}
+
+}  // namespace
 
 ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup& group) {
   const SceneFile file = loadStudyScene(config.scene, config.resolution);
@@ -46,11 +64,15 @@ ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup&
   if (group.distributed())
     image.attributes["verity:processes"] = fmt::format(
         "{} MPI ranks, {} threads each; rank 0 on {}", group.size(), threads, group.hostName());
-  // Half floats: a relative rounding error of at most 2⁻¹¹ per value, so the quantisation
-  // adds at most about (2⁻¹¹)² ≈ 2.4e-7 to a measured relative MSE. Written under a temporary
-  // name and renamed when whole: a job killed meanwhile leaves no image that looks complete.
+  // Half floats where they hold every value: a relative rounding error of at most 2⁻¹¹ per
+  // value, so the quantisation adds at most about (2⁻¹¹)² ≈ 2.4e-7 to a measured relative
+  // MSE. A brighter image (a visible emitter, say) is written in 32-bit floats instead: half
+  // floats would store Inf. Written under a temporary name and renamed when whole: a job
+  // killed meanwhile leaves no image that looks complete.
+  checkFinite(image, result.image);
+  const bool halfFloat = fitsHalfFloat(image);
   const std::filesystem::path writing = result.image.string() + ".writing";
-  writeExr(writing, image, /*halfFloat=*/true);
+  writeExr(writing, image, halfFloat);
   std::filesystem::rename(writing, result.image);
 
   result.metadata = {
@@ -72,7 +94,8 @@ ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup&
       {"machine", toJson(machine)},
       {"revision", revision},
       {"created", timestamp()},
-      {"format", "OpenEXR, half float, ZIP; R, G, B, variance.R/G/B, samples"},
+      {"format", fmt::format("OpenEXR, {}, ZIP; R, G, B, variance.R/G/B, samples",
+                             halfFloat ? "half float (samples 32-bit float)" : "32-bit float")},
       // Every setting spelled out, so that the command remakes this image bit for bit at
       // `revision` (renders do not depend on the thread count).
       {"command", fmt::format("verity reference {} --spp {} --integrator {} --max-bounces {} "

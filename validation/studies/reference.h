@@ -27,11 +27,12 @@ struct ReferenceResult {
 };
 
 // Writes <directory>/<scene>.exr (R, G, B means; variance.R/G/B, the variance of one sample;
-// samples; half floats, ZIP) and <directory>/<scene>.json: integrator, spp, seed, times,
-// threads, machine, source revision and the reference's own estimated relative MSE,
-// mean over pixels and channels of (variance / samples) / (mean² + ε). Over a distributed
-// `group` the ranks share the passes (the image is the same bits) and rank 0 alone writes;
-// the other ranks get an empty result.
+// samples; ZIP; half floats where they hold every value, else 32-bit floats; never Inf: a
+// value beyond 32-bit floats is an error) and <directory>/<scene>.json: integrator, spp, seed,
+// times, threads, machine, source revision and the reference's own estimated relative MSE, mean
+// over pixels and channels of (variance / samples) / (mean² + ε). Over a distributed `group` the
+// ranks share the passes (the image is the same bits) and rank 0 alone writes; the other ranks get
+// an empty result.
 ReferenceResult makeReference(const ReferenceConfig& config,
                               const ProcessGroup& group = ProcessGroup::solo());
 

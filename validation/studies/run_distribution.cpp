@@ -59,6 +59,7 @@ StudyProgress executeRuns(const ProcessGroup& group, int threadsPerRun, StudyOut
                           std::vector<StudyRun>& runs,
                           const std::function<void(const std::string&)>& log) {
   if (group.distributed()) checkCores(group, threadsPerRun);
+  if (group.isRoot()) output.repairTruncatedLine(log);
   const std::vector<int> remaining = remainingRuns(group, output, runs);
   StudyProgress progress;
   progress.total = int(runs.size());

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "render/component_images.h"
 #include "validation/studies/npy_file.h"
+#include "validation/studies/reference_match.h"
 #include "validation/studies/relative_error.h"
 #include "validation/studies/seeds.h"
 #include "validation/studies/strategy_variance.h"
@@ -86,11 +87,7 @@ void writeStrategyImages(const std::filesystem::path& npy, const ComponentImages
 
 StudyProgress runStrategiesStudy(const StrategiesConfig& config,
                                  const std::function<void(const std::string&)>& log) {
-  if (config.budgetType != "spp" && config.budgetType != "time")
-    throw VerityError("", "", "the budget is samples per pixel (--spp) or seconds (--time)");
-  if (config.budgets.empty()) throw VerityError("", "", "no budget given");
-  for (double b : config.budgets)
-    if (!(b > 0)) throw VerityError("", "", fmt::format("budgets must be positive, not {}", b));
+  checkBudgets(config.budgetType, config.budgets);
 
   std::optional<ImageChannels> reference;
   if (!config.reference.empty()) reference = readExr(config.reference);
@@ -103,6 +100,9 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
   const auto integrator = makeIntegrator(settings);
   const auto pathTracer = makeIntegrator(ptSettings);
   const Vector2i resolution = file.scene->camera().resolution();
+  if (reference)
+    checkReferenceMatches(config.reference, *reference, config.scene, resolution, config.force,
+                          log);
   const MachineInfo machine = machineInfo();
   const std::string revision = sourceRevision();
   const int threads = config.threads > 0 ? config.threads : std::max(1, machine.cores);
@@ -123,6 +123,7 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
   }
 
   StudyOutput output(config.output, "strategies", strategiesKey);
+  output.repairTruncatedLine(log);
   StudyProgress progress;
   progress.total = int(config.runs * config.budgets.size());
   for (int run = 0; run < config.runs; ++run)

@@ -26,6 +26,8 @@ struct StrategiesConfig {
   // The path tracer whose path-length images the strategies are set beside.
   std::string pathTracer = "path_tracer_mis";
   std::filesystem::path reference;  // optional: the full image, for the share beyond k
+  // Use a reference that records another scene (never one of another resolution).
+  bool force = false;
   std::filesystem::path output = "strategies.jsonl";
   // Saves the MIS-weighted strategy images of run 0 at the largest budget (.npy, float16,
   // next to the output) for the report's pyramid.

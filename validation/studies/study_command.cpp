@@ -72,6 +72,8 @@ void addConvergence(CLI::App& study, const ProcessGroup& group) {
       ->check(CLI::Range(0, kMaxBouncesLimit));
   cmd->add_flag("--no-error-images", *noImages,
                 "Do not save relative-error images at the largest budget");
+  cmd->add_flag("--force", config->force,
+                "Use a reference that records another scene (a warning instead of an error)");
   cmd->callback([=, &group] {
     if (budgets.values().empty())
       throw CLI::ValidationError("convergence", "give budgets with either --spp or --time");
@@ -156,6 +158,8 @@ void addStrategies(CLI::App& study) {
       ->capture_default_str();
   cmd->add_flag("--no-images", *noImages,
                 "Do not save the weighted strategy images at the largest budget");
+  cmd->add_flag("--force", config->force,
+                "Use a reference that records another scene (a warning instead of an error)");
   cmd->callback([=] {
     config->budgetType = budgets.type();
     if (!budgets.values().empty()) config->budgets = budgets.values();

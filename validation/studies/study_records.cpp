@@ -1,5 +1,10 @@
 #include "validation/studies/study_records.h"
 
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
 #include "core/error.h"
 #include "validation/studies/json_lines.h"
 #include "validation/studies/study_scene.h"
@@ -21,14 +26,38 @@ std::vector<PreparedIntegrator> prepareIntegrators(const SceneFile& file,
 }
 
 StudyOutput::StudyOutput(std::filesystem::path file, const std::string& study, Key key)
-    : file_(std::move(file)), key_(key) {
-  for (const nlohmann::json& r : readJsonLines(file_))
+    : file_(std::move(file)), read_(readJsonLinesFile(file_)), key_(key) {
+  for (const nlohmann::json& r : read_.records)
     if (r.value("study", "") == study) done_.insert(key_(r));
+}
+
+void StudyOutput::repairTruncatedLine(const std::function<void(const std::string&)>& log) {
+  if (!read_.truncatedLine) return;
+  removeTruncatedLine(file_, read_);
+  if (log)
+    log(
+        fmt::format("{}: line {}: removed a truncated record (a run cut off while writing it); "
+                    "that run is redone",
+                    file_.string(), *read_.truncatedLine));
+  read_.truncatedLine.reset();
 }
 
 void StudyOutput::append(const nlohmann::json& record) {
   appendJsonLine(file_, record);
   done_.insert(key_(record));
+}
+
+void checkBudgets(const std::string& type, const std::vector<double>& budgets) {
+  if (type != "spp" && type != "time")
+    throw VerityError("", "", "the budget is samples per pixel (--spp) or seconds (--time)");
+  if (budgets.empty()) throw VerityError("", "", "no budget given");
+  for (double b : budgets) {
+    if (!(b > 0))
+      throw VerityError("", "--" + type, fmt::format("budgets must be positive, not {}", b));
+    if (type == "spp" && (b != std::floor(b) || b > std::numeric_limits<int>::max()))
+      throw VerityError("", "--spp",
+                        fmt::format("samples per pixel must be a whole number, not {}", b));
+  }
 }
 
 nlohmann::json recordHeader(const std::string& study, const std::filesystem::path& scene,

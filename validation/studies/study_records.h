@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -11,6 +12,7 @@
 
 #include "integrators/integrator_settings.h"
 #include "scene/scene_loader.h"
+#include "validation/studies/json_lines.h"
 #include "validation/studies/machine_info.h"
 
 namespace verity::studies {
@@ -35,16 +37,26 @@ std::vector<PreparedIntegrator> prepareIntegrators(const SceneFile& file,
 class StudyOutput {
  public:
   using Key = std::string (*)(const nlohmann::json&);
+  // Reads the records already in `file`; a corrupt line other than a truncated last one is
+  // an error naming the file and the line.
   StudyOutput(std::filesystem::path file, const std::string& study, Key key);
   bool has(const nlohmann::json& record) const { return done_.count(key_(record)) > 0; }
+  // Removes a truncated last line (a run cut off while writing its record; that run is not
+  // counted as done, so it is redone) and says so in `log`. Before appending.
+  void repairTruncatedLine(const std::function<void(const std::string&)>& log);
   // Appends the record, flushed to the file before returning.
   void append(const nlohmann::json& record);
 
  private:
   std::filesystem::path file_;
+  JsonLinesFile read_;
   Key key_;
   std::set<std::string> done_;
 };
+
+// Refuses a budget type other than "spp" or "time", no budgets, a budget that is not positive,
+// and an spp budget that is not a whole number.
+void checkBudgets(const std::string& type, const std::vector<double>& budgets);
 
 // The fields that say which render a record is of; its key is drawn from them.
 nlohmann::json recordHeader(const std::string& study, const std::filesystem::path& scene,

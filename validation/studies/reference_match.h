@@ -1,0 +1,24 @@
+// Whether a reference image is one of the scene a study renders, at the study's resolution:
+// errors measured against another scene's reference mean nothing, and per-pixel errors need
+// the same pixels.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "core/math.h"
+#include "film/image_io.h"
+
+namespace verity::studies {
+
+// Throws VerityError naming the reference when its size differs from `resolution`, or when
+// the scene it records (the verity:scene attribute) is not `scene`; with `force` a different
+// scene is only reported to `log`. A reference that records no scene is reported to `log`.
+// Scenes are the same file when both paths name one, else when their names (stems) agree.
+void checkReferenceMatches(const std::filesystem::path& referenceFile,
+                           const ImageChannels& reference, const std::filesystem::path& scene,
+                           const Vector2i& resolution, bool force,
+                           const std::function<void(const std::string&)>& log);
+
+}  // namespace verity::studies
