@@ -20,7 +20,7 @@
 
 #include "film/film.h"
 #include "film/image_io.h"
-#include "validation/pixel_statistics.h"
+#include "validation/stats/pixel_statistics.h"
 
 namespace verity::validation {
 

@@ -7,7 +7,10 @@
 
 #include "core/error.h"
 #include "validation/comparison_report.h"
+#include "validation/distinct_files.h"
 #include "validation/image_comparison.h"
+#include "validation/side_loading.h"
+#include "validation/z_score_image.h"
 
 namespace verity {
 
@@ -16,42 +19,77 @@ namespace {
 constexpr int kAgree = 0, kDiffer = 1, kBadInput = 2;
 
 struct CompareArgs {
-  std::vector<std::string> images;
+  std::vector<std::string> images;  // A.exr B.exr
+  std::vector<std::string> a, b;    // -a A1.exr ..., -b B1.exr ...
   // Read as text and parsed here, so that a malformed value is bad input (status 2) like
   // every other; CLI11's own conversion errors have exit codes of their own.
   std::string tile = "16";
   std::string alpha = "0.01";
+  std::string layer;
   std::string json;
+  std::string zImage;
 };
 
 template <typename T>
-T parseNumber(const std::string& text, const char* option) {
+T parseNumber(const std::string& text, const char* option, const char* kind) {
   T value{};
   const char* end = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (ec == std::errc::result_out_of_range)
+    throw VerityError("", option, fmt::format("\"{}\" is out of range for {}", text, kind));
   if (ec != std::errc() || ptr != end || text.empty())
-    throw VerityError("", option, fmt::format("\"{}\" is not a number", text));
+    throw VerityError("", option, fmt::format("\"{}\" is not {}", text, kind));
   return value;
 }
 
-int run(const CompareArgs& args) {
-  if (args.images.size() != 2)
+std::vector<std::filesystem::path> paths(const std::vector<std::string>& names) {
+  return {names.begin(), names.end()};
+}
+
+// The two sides' files: two positional images, or -a and -b.
+std::pair<std::vector<std::filesystem::path>, std::vector<std::filesystem::path>> sideFiles(
+    const CompareArgs& args) {
+  const bool sets = !args.a.empty() || !args.b.empty();
+  if (sets && !args.images.empty())
     throw VerityError("", "",
-                      fmt::format("compare needs exactly two images, A.exr and B.exr, "
-                                  "not {}",
-                                  args.images.size()));
+                      "give either two images (A.exr B.exr) or the sides with -a and -b, not "
+                      "both");
+  if (!sets) {
+    if (args.images.size() != 2)
+      throw VerityError("", "",
+                        fmt::format("compare needs two images, A.exr and B.exr, or the sides "
+                                    "with -a A1.exr ... -b B1.exr ...; got {} images",
+                                    args.images.size()));
+    return {{args.images[0]}, {args.images[1]}};
+  }
+  if (args.a.empty() || args.b.empty())
+    throw VerityError("", args.a.empty() ? "-a" : "-b",
+                      "each side needs at least one file: -a A1.exr ... -b B1.exr ...");
+  return {paths(args.a), paths(args.b)};
+}
+
+int run(const CompareArgs& args) {
   validation::ComparisonOptions options;
-  options.tileSize = parseNumber<int>(args.tile, "--tile");
-  options.alpha = parseNumber<double>(args.alpha, "--alpha");
-  const validation::PixelStatistics a = validation::loadPixelStatistics(args.images[0]);
-  const validation::PixelStatistics b = validation::loadPixelStatistics(args.images[1]);
-  const validation::ComparisonResult result = validation::compareImages(a, b, options);
+  options.tileSize = parseNumber<int>(args.tile, "--tile", "a whole number of pixels");
+  options.alpha = parseNumber<double>(args.alpha, "--alpha", "a number");
+  validation::checkComparisonOptions(options);
+  const auto [filesA, filesB] = sideFiles(args);
+  std::vector<std::filesystem::path> all = filesA;
+  all.insert(all.end(), filesB.begin(), filesB.end());
+  validation::requireDistinctFiles(all);
+  const auto a = validation::loadSide(filesA, "A", args.layer);
+  const auto b = validation::loadSide(filesB, "B", args.layer);
+  const validation::ComparisonResult result = validation::compareSides(*a, *b, options);
   fmt::print("{}", validation::comparisonSummary(result));
   if (!args.json.empty()) {
     std::ofstream out(args.json);
     out << validation::comparisonJson(result).dump(2) << "\n";
     if (!out) throw VerityError(args.json, "", "cannot write the JSON report");
     fmt::print("wrote {}\n", args.json);
+  }
+  if (!args.zImage.empty()) {
+    validation::writeZScoreImage(args.zImage, result);
+    fmt::print("wrote {}\n", args.zImage);
   }
   return result.differ ? kDiffer : kAgree;
 }
@@ -71,13 +109,29 @@ void addCompareCommand(CLI::App& app) {
   auto args = std::make_shared<CompareArgs>();
   CLI::App* cmd = app.add_subcommand(
       "compare",
-      "Do two renders (made with --variance) agree? Welch t-tests per tile, Holm decision; "
-      "exit status 0 agree, 1 differ, 2 bad input");
-  cmd->add_option("images", args->images, "A.exr B.exr");
-  cmd->add_option("--tile", args->tile, "Tile size in pixels (default 16)");
+      "Do two sides estimate the same image? A side is one EXR with variance channels "
+      "(verity render --variance) or, with -a/-b, a set of independent renders from any "
+      "renderer. Welch t-tests per tile, Holm decision; exit status 0 agree, 1 differ, 2 bad "
+      "input");
+  cmd->add_option("images", args->images, "A.exr B.exr: two images with variance channels");
+  cmd->add_option("-a", args->a,
+                  "Side A: one EXR with variance channels, or several independent renders "
+                  "(at least 2; the variance from their spread, df = renders - 1)")
+      ->type_name("FILE...");
+  cmd->add_option("-b", args->b, "Side B, like -a")->type_name("FILE...");
+  cmd->add_option("--tile", args->tile, "Tile size in pixels, a whole number >= 1 (default 16)")
+      ->type_name("INT");
   cmd->add_option("--alpha", args->alpha,
-                  "Family-wise significance level of the decision (default 0.01)");
-  cmd->add_option("--json", args->json, "Also write every tile's test to this JSON file");
+                  "Family-wise significance level of the Holm decision, in (0, 1) (default "
+                  "0.01)")
+      ->type_name("FLOAT");
+  cmd->add_option("--layer", args->layer,
+                  "Read a set's R, G, B from this EXR layer (LAYER.R, LAYER.G, LAYER.B) when "
+                  "its files have several");
+  cmd->add_option("-o,--json", args->json, "Also write every tile's test to this JSON file");
+  cmd->add_option("--z-image", args->zImage,
+                  "Write a PNG of each tile's z-score (blue: B below A, red: B above; black "
+                  "outline: rejected)");
   cmd->callback([args] { throw CLI::RuntimeError(runReportingErrors(*args)); });
 }
 

@@ -1,5 +1,7 @@
-// `verity compare A.exr B.exr`: do two renders (made with --variance) estimate the same
-// image? Per-tile Welch t-tests decided by Holm's procedure (validation/image_comparison.h).
+// `verity compare A.exr B.exr` or `verity compare -a A1.exr A2.exr ... -b B1.exr ...`: do two
+// sides estimate the same image? A side is one image with variance channels (a Verity EXR
+// rendered with --variance) or a set of independent renders from any renderer. Per-tile Welch
+// t-tests decided by Holm's procedure (validation/image_comparison.h).
 // Exit status 0 when they agree, 1 when they differ, 2 on bad input.
 #pragma once
 

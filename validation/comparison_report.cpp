@@ -1,7 +1,9 @@
 #include "validation/comparison_report.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace verity::validation {
@@ -18,17 +20,61 @@ nlohmann::json number(double x) {
   return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
 }
 
+// "8 renders (a1.exr, ...): variance from their spread, df 7" or "one image with variance
+// channels (a.exr): variance from its pixels' samples, Welch-Satterthwaite df".
+std::string sideLine(const SideSummary& side) {
+  if (!side.renderSet)
+    return fmt::format(
+        "one image with variance channels, {}: each tile's variance from its "
+        "pixels' sample variances, Welch-Satterthwaite df",
+        side.files.front());
+  std::string s = fmt::format(
+      "a set of {} renders, each tile's variance from their spread (df = {} - 1 = {}): {}",
+      side.renders(), side.renders(), side.renders() - 1, fmt::join(side.files, ", "));
+  for (size_t i = 0; i < side.files.size(); ++i)
+    if (side.nonfinitePixels[i] > 0)
+      s += fmt::format("\n   {} has {} pixels with a non-finite value: left out of both sides",
+                       side.files[i], side.nonfinitePixels[i]);
+  return s;
+}
+
+nlohmann::json sideJson(const SideSummary& side) {
+  nlohmann::json j;
+  j["kind"] = side.renderSet ? "render_set" : "variance_image";
+  j["files"] = side.files;
+  j["renders"] = side.renders();
+  if (side.renderSet) {
+    j["df"] = side.renders() - 1;
+    j["nonfinite_pixels"] = side.nonfinitePixels;
+  }
+  return j;
+}
+
+// Median, smallest and largest finite per-test detectable bias.
+std::string tileBiasLine(const ComparisonResult& r) {
+  std::vector<double> biases;
+  for (const TileTest& t : r.tests)
+    if (!t.welch.deterministic && std::isfinite(t.detectableBias))
+      biases.push_back(t.detectableBias);
+  if (biases.empty()) return "none of the tests has a finite detectable bias";
+  std::sort(biases.begin(), biases.end());
+  return fmt::format("median {}, smallest {}, largest {} over {} of {} tests",
+                     percent(biases[biases.size() / 2]), percent(biases.front()),
+                     percent(biases.back()), biases.size(), r.tests.size());
+}
+
 }  // namespace
 
 std::string comparisonSummary(const ComparisonResult& r, size_t worstCount) {
   const auto& o = r.options;
   std::string s;
-  s += fmt::format("A: {}\nB: {}\n", r.labelA, r.labelB);
+  s += fmt::format("A: {}\nB: {}\n", sideLine(r.sideA), sideLine(r.sideB));
   s += fmt::format(
-      "{}x{} pixels in {}x{}-pixel tiles: {} tiles tested, {} untested (no pixel with {}+ "
-      "samples in both); {} pixels left out\n",
-      r.width, r.height, o.tileSize, o.tileSize, r.tilesTested, r.tilesUntested, o.minSamples,
-      r.pixelsExcluded);
+      "{}x{} pixels in {}x{}-pixel tiles: {} tiles tested, {} untested (no pixel usable on "
+      "both sides); {} pixels left out (fewer than {} samples in an image with variances, or "
+      "a non-finite value in a set)\n",
+      r.width, r.height, o.tileSize, o.tileSize, r.tilesTested, r.tilesUntested, r.pixelsExcluded,
+      o.minSamples);
   s += fmt::format(
       "Welch t-test per tile and channel (R, G, B): {} tests, {} deterministic (zero variance "
       "in both)\n",
@@ -54,15 +100,19 @@ std::string comparisonSummary(const ComparisonResult& r, size_t worstCount) {
       "power: a uniform brightness bias of {} would be detected with {:.0f}% "
       "probability\n",
       percent(r.detectableBias), 100 * o.power);
+  s += fmt::format(
+      "per test, the smallest relative bias of its tile detected with {:.0f}% probability at "
+      "the Bonferroni level {:.3g} (alpha / {} tests; Holm rejects at least as much): {}\n",
+      100 * o.power, o.alpha / r.tests.size(), r.tests.size(), tileBiasLine(r));
   s += "smallest p-values:\n";
   for (size_t i : r.worst(worstCount)) {
     const TileTest& t = r.tests[i];
     s += fmt::format(
         "  tile ({},{}) pixels [{},{})x[{},{}) {}: A {:.6g} B {:.6g} rel {:+.3g}% t {:.3g} "
-        "df {:.4g} p {:.3g} Holm {:.3g}{}\n",
+        "df {:.4g} p {:.3g} Holm {:.3g} detectable {}{}\n",
         t.tileX, t.tileY, t.rect.x0, t.rect.x1, t.rect.y0, t.rect.y1, kChannelNames[t.channel],
         t.pooled.a.mean, t.pooled.b.mean, 100 * t.relativeDifference, t.welch.t, t.welch.df,
-        t.welch.p, t.adjustedP, t.rejected ? " REJECTED" : "");
+        t.welch.p, t.adjustedP, percent(t.detectableBias), t.rejected ? " REJECTED" : "");
   }
   for (const std::string& w : r.warnings) s += "warning: " + w + "\n";
   s += r.differ ? fmt::format(
@@ -80,6 +130,8 @@ nlohmann::json comparisonJson(const ComparisonResult& r) {
   nlohmann::json j;
   j["a"] = r.labelA;
   j["b"] = r.labelB;
+  j["side_a"] = sideJson(r.sideA);
+  j["side_b"] = sideJson(r.sideB);
   j["width"] = r.width;
   j["height"] = r.height;
   j["tile_size"] = r.options.tileSize;
@@ -114,6 +166,8 @@ nlohmann::json comparisonJson(const ComparisonResult& r) {
                      {"variance_b", t.pooled.b.variance},
                      {"relative_difference", t.relativeDifference},
                      {"t", t.welch.t},
+                     {"z", number(t.z)},
+                     {"detectable_relative_bias", number(t.detectableBias)},
                      {"df", number(t.welch.df)},
                      {"p", t.welch.p},
                      {"holm_adjusted_p", t.adjustedP},

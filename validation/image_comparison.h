@@ -3,10 +3,13 @@
 // tiles' p-values are uniform.
 //
 // Choices:
+// - Each side is one image with per-pixel variances (variance_image_side.h) or a set of
+//   independent renders (render_set_side.h); both are pooled over the same pixels: those
+//   usable on both sides.
 // - Tiles of tileSize² pixels (16 by default), pooled by tile_pooling.h: the mean of the
-//   pixel means, its variance Σ s_i²/n_i / P². Pooling makes each test's mean close to normal
-//   (the t-test's assumption) and the family small; a bias confined to one pixel is diluted
-//   by the tile's P pixels.
+//   pixel means, its variance Σ s_i²/n_i / P² (or, for a set, from the renders' spread).
+//   Pooling makes each test's mean close to normal (the t-test's assumption) and the family
+//   small; a bias confined to one pixel is diluted by the tile's P pixels.
 // - One test per colour channel, not one on luminance: the EXR stores each channel's
 //   variance but not the covariances between channels that the variance of a luminance
 //   would need, and a bias in one channel (a wrong blue albedo) would be weighted down by
@@ -23,61 +26,44 @@
 //   estimators violate its assumptions in correct renders.
 #pragma once
 
-#include <array>
 #include <string>
 #include <vector>
 
-#include "validation/pixel_statistics.h"
-#include "validation/stats/holm.h"
-#include "validation/stats/kolmogorov_smirnov.h"
-#include "validation/stats/welch_t.h"
-#include "validation/tile_pooling.h"
+#include "validation/comparison_side.h"
+#include "validation/stats/pixel_statistics.h"
+#include "validation/stats/tile_decision.h"
 
 namespace verity::validation {
 
 struct ComparisonOptions {
   int tileSize = 16;
   double alpha = 0.01;  // family-wise level of the Holm decision
-  int minSamples = 2;   // per pixel, in both images
-  double power = 0.9;   // for the detectable-bias figure
+  int minSamples = 2;   // per pixel, in an image with variances
+  double power = 0.9;   // for the detectable-bias figures
 };
 
-struct TileTest {
-  int tileX = 0, tileY = 0;  // tile indices
-  TileRect rect;
-  int channel = 0;
-  PooledTile pooled;
-  WelchResult welch;
-  // (M_B − M_A) / ((|M_A| + |M_B|) / 2); 0 when both means are 0.
-  double relativeDifference = 0;
-  double adjustedP = 1;  // Holm
-  bool rejected = false;
-};
-
-struct ComparisonResult {
+struct ComparisonResult : TileDecision {
   ComparisonOptions options;
   std::string labelA, labelB;
+  SideSummary sideA, sideB;
   int width = 0, height = 0, tilesX = 0, tilesY = 0;
-  int tilesTested = 0, tilesUntested = 0;  // untested: no pixel with enough samples
-  int pixelsExcluded = 0;                  // pixels with too few samples in either image
-  int deterministicTests = 0;
-  std::vector<TileTest> tests;  // tile-major, then channel
-  HolmResult holm;
-  std::array<KsResult, kChannels> uniformity;  // per channel
-  double uniformityP = 1;  // Bonferroni-combined over the channels with ≥ 1 value
-  double smallestP = 1;
-  // The smallest uniform relative bias of B detected with probability options.power
-  // (power.h); infinity when none is.
-  double detectableBias = 0;
-  bool differ = false;
-  std::vector<std::string> warnings;  // from the images' attributes
+  int tilesTested = 0, tilesUntested = 0;  // untested: no pixel usable on both sides
+  int pixelsExcluded = 0;                  // pixels not usable on both sides
+  std::vector<TileTest> tests;             // tile-major, then channel
+  std::vector<std::string> warnings;       // from the images' attributes
 
   // Indices into `tests`, smallest p first (ties: larger |relative difference| first).
   std::vector<size_t> worst(size_t count) const;
 };
 
-// Throws VerityError naming both images when their resolutions differ or no tile can be
+// Throws VerityError naming the option that is out of range.
+void checkComparisonOptions(const ComparisonOptions& options);
+
+// Throws VerityError naming both sides when their resolutions differ or no tile can be
 // tested, and naming the option when an option is out of range.
+ComparisonResult compareSides(const ComparisonSide& a, const ComparisonSide& b,
+                              const ComparisonOptions& options = {});
+// Two images with per-pixel variances.
 ComparisonResult compareImages(const PixelStatistics& a, const PixelStatistics& b,
                                const ComparisonOptions& options = {});
 

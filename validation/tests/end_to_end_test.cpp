@@ -11,6 +11,7 @@
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "validation/comparison_report.h"
+#include "validation/exr_statistics.h"
 #include "validation/image_comparison.h"
 
 namespace verity::validation {

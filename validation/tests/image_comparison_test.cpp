@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "synthetic_images.h"
 #include "validation/comparison_report.h"
+#include "validation/exr_statistics.h"
 #include "validation/stats/power.h"
 
 namespace verity::validation {

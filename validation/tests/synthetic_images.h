@@ -6,7 +6,7 @@
 
 #include "film/film.h"
 #include "film/image_io.h"
-#include "validation/pixel_statistics.h"
+#include "validation/exr_statistics.h"
 
 namespace verity::validation::testing {
 

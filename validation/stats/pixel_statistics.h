@@ -1,16 +1,14 @@
 // Per-pixel statistics of a rendered image: the mean of each pixel's samples, the unbiased
 // sample variance of ONE sample, and the number of valid samples, per colour channel. This is
 // what `verity render --variance` writes (R, G, B, variance.R/G/B, samples); the variance of
-// a pixel's mean is then variance / samples.
+// a pixel's mean is then variance / samples. Plain arrays: reading them from an EXR is
+// validation/exr_statistics.h.
 #pragma once
 
 #include <array>
-#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
-
-#include "film/image_io.h"
 
 namespace verity::validation {
 
@@ -27,14 +25,8 @@ struct PixelStatistics {
   size_t index(int x, int y) const { return size_t(y) * width + x; }
 };
 
-// Checks the planes (R, G, B, variance.R/G/B, samples) and their values; throws VerityError
-// naming `label` when a plane is missing (render with --variance), or a value is negative,
-// not finite, or a sample count is not a whole number.
-PixelStatistics pixelStatistics(const ImageChannels& image, const std::string& label);
 // The statistics of every sample multiplied by `factor` (means × factor, variances ×
 // factor²): a render with a uniform brightness error, to measure a comparison's power.
 PixelStatistics scaledStatistics(PixelStatistics s, double factor);
-// readExr followed by pixelStatistics.
-PixelStatistics loadPixelStatistics(const std::filesystem::path& file);
 
 }  // namespace verity::validation

@@ -1,4 +1,4 @@
-#include "validation/pixel_statistics.h"
+#include "validation/exr_statistics.h"
 
 #include <fmt/format.h>
 
@@ -64,15 +64,6 @@ PixelStatistics pixelStatistics(const ImageChannels& image, const std::string& l
     stats.samples[i] = s[i];
   }
   return stats;
-}
-
-PixelStatistics scaledStatistics(PixelStatistics s, double factor) {
-  s.label += fmt::format(" x{}", factor);
-  for (int c = 0; c < kChannels; ++c) {
-    for (double& m : s.mean[c]) m *= factor;
-    for (double& v : s.variance[c]) v *= factor * factor;
-  }
-  return s;
 }
 
 PixelStatistics loadPixelStatistics(const std::filesystem::path& file) {

@@ -10,27 +10,37 @@
 // a sum of independent scaled variance estimates with n_i − 1 degrees of freedom each, whose
 // Satterthwaite (1946) denominator is Σ_i (s_i²/(n_i P²))² / (n_i − 1).
 //
-// A pixel enters the tile only when it has at least `minSamples` (≥ 2, so that its variance
-// exists) in BOTH images, so that both estimates cover the same pixels.
+// Only the pixels a mask marks enter, so that the two sides of a comparison cover the same
+// pixels: a pixel needs at least 2 samples (for its variance) in every image compared.
 #pragma once
 
-#include "validation/pixel_statistics.h"
-#include "validation/stats/welch_t.h"
+#include <vector>
+
+#include "pixel_statistics.h"
+#include "welch_t.h"
 
 namespace verity::validation {
 
 struct TileRect {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // pixels [x0, x1) × [y0, y1)
+
+  int area() const { return (x1 - x0) * (y1 - y0); }
 };
 
+// The two estimates one tile's test compares.
 struct PooledTile {
   MeanEstimate a, b;
   int pixels = 0;    // pixels used
-  int excluded = 0;  // pixels left out for having too few samples in either image
+  int excluded = 0;  // pixels of the tile left out (unusable in either image)
 };
 
-// Requires images of the same resolution and minSamples ≥ 2.
-PooledTile poolTile(const PixelStatistics& a, const PixelStatistics& b, const TileRect& tile,
-                    int channel, int minSamples);
+// 1 for every pixel with at least `minSamples` (≥ 2) samples, 0 otherwise; row-major.
+std::vector<char> pixelsWithSamples(const PixelStatistics& s, int minSamples);
+
+// The estimate of the tile's mean of `channel` over the pixels that `usable` (width·height,
+// row-major) marks; `pixels` receives their number (the estimate is zero when it is 0).
+// Every marked pixel must have at least 2 samples (std::invalid_argument otherwise).
+MeanEstimate poolPixels(const PixelStatistics& s, const TileRect& tile, int channel,
+                        const std::vector<char>& usable, int* pixels);
 
 }  // namespace verity::validation
