@@ -7,8 +7,9 @@
 namespace verity::chi2 {
 
 const char* defectName(Defect d) {
-  static const char* names[] = {"non-finite value", "negative value", "weight != eval*cos/pdf",
-                                "sample pdf != pdf()", "reciprocity"};
+  static const char* names[] = {
+      "non-finite value",    "negative value", "weight != eval*cos/pdf",
+      "sample pdf != pdf()", "reciprocity",    "direction not a unit vector"};
   return names[static_cast<int>(d)];
 }
 

@@ -1,6 +1,7 @@
 // Deterministic per-sample checks (no statistics): a value that is NaN, infinite or
 // negative, a weight that disagrees with eval·|cos|/pdf, a sample pdf that disagrees with
-// pdf(), a reciprocity violation. Each kind keeps a count and its first example.
+// pdf(), a reciprocity violation, a sampled direction that is not a unit vector. Each kind
+// keeps a count and its first example.
 #pragma once
 
 #include <array>
@@ -14,6 +15,7 @@ enum class Defect {
   Weight,       // weight ≠ eval·|cos θo| / pdf beyond kWeightTolerance
   SamplePdf,    // sample().pdf ≠ pdf(wi, wo) beyond kWeightTolerance
   Reciprocity,  // eval(wi,wo)·ηo² ≠ eval(wo,wi)·ηi² beyond kReciprocityTolerance
+  NotUnit,      // a sampled direction whose length is not 1 (to 1e-3)
   Count
 };
 

@@ -48,8 +48,12 @@ std::optional<Point2d> BsdfModelSubject::sample(pcg32& rng, Audit& audit) const 
   auto at = [&] {
     return fmt::format("wi={} u=({}, {}, {}) wo={}", str(wi), u.lobe, u.xy.x, u.xy.y, str(s->wo));
   };
-  if (!s->wo.allFinite() || std::fabs(s->wo.norm() - 1) > 1e-3) {
-    audit.record(Defect::NonFinite, "sampled direction not a unit vector: " + at());
+  if (!s->wo.allFinite()) {
+    audit.record(Defect::NonFinite, "sampled direction " + at());
+    return std::nullopt;
+  }
+  if (std::fabs(s->wo.norm() - 1) > 1e-3) {
+    audit.record(Defect::NotUnit, "sampled direction not a unit vector: " + at());
     return std::nullopt;
   }
   const Vector3d& wo = s->wo;

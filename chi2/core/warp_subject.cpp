@@ -51,7 +51,7 @@ std::optional<Point2d> WarpSubject::sample(pcg32& rng, Audit& audit) const {
   }
   if (!isDirectional(model_.domain)) return Point2d(p->x(), p->y());
   if (std::fabs(p->norm() - 1) > 1e-3) {
-    audit.record(Defect::NonFinite,
+    audit.record(Defect::NotUnit,
                  fmt::format("sampled direction ({}, {}, {}) not a unit vector at u=({}, {})",
                              p->x(), p->y(), p->z(), u.x, u.y));
     return std::nullopt;
