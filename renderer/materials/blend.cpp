@@ -44,11 +44,6 @@ std::optional<BsdfSample> Blend::sample(const TextureQuery& q, const Vector3f& w
   return makeSample(s->wo, eval(q, wi, s->wo, mode), pdf(q, wi, s->wo), s->lobe, s->eta);
 }
 
-Color3 Blend::emitted(const TextureQuery& q, const Vector3f& w) const {
-  const float t = amount(q);
-  return (1 - t) * a_->emitted(q, w) + t * b_->emitted(q, w);
-}
-
 MaterialType blendType() {
   return {"blend",
           {},
@@ -56,6 +51,11 @@ MaterialType blendType() {
           [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
             auto a = f.reference(node[{"a"}]);
             auto b = f.reference(node[{"b"}]);
+            for (const auto& [key, material] : {std::pair{"a", a.get()}, std::pair{"b", b.get()}})
+              if (material->isEmitter())
+                node[{key}].fail(
+                    "a blend cannot contain an emitter: only a surface whose material is a "
+                    "\"diffuse light\" emits; give the light its own surface");
             TexturedColor amount = f.textures().parse(node, {"amount"}, Color3::Constant(0.5f));
             if (amount.isConstant() && !(amount.constant() <= 1).all())
               node[{"amount"}].fail("the blend amount must lie in [0, 1]");

@@ -2,6 +2,8 @@
 // of b). Sampling picks b with probability t and a otherwise, so the density of a
 // non-delta direction is the mixture (1 − t)·p_a + t·p_b. A delta sample keeps the chosen
 // material's weight (its contribution t·f_b and its probability t·p_b share the factor t).
+// Neither material may emit: emitters are surfaces that carry a light (scene.cpp), and a
+// blended emission would need a light of textured radiance; the scene loader refuses it.
 #pragma once
 
 #include <memory>
@@ -22,8 +24,6 @@ class Blend : public Material {
   std::optional<BsdfSample> sample(const TextureQuery& q, const Vector3f& wi, float uLobe,
                                    const Point2f& u, TransportMode mode) const override;
   uint32_t lobes() const override { return a_->lobes() | b_->lobes(); }
-  Color3 emitted(const TextureQuery& q, const Vector3f& w) const override;
-  bool isEmitter() const override { return a_->isEmitter() || b_->isEmitter(); }
   bool isTextured() const override {
     return !amount_.isConstant() || a_->isTextured() || b_->isTextured();
   }

@@ -2,6 +2,7 @@
 
 #include "materials/fresnel.h"
 #include "materials/material_factory.h"
+#include "materials/material_params.h"
 
 namespace verity {
 
@@ -36,7 +37,7 @@ MaterialType dielectricType() {
           {},
           "smooth glass, a delta reflection and refraction; ior (1.5)",
           [](MaterialFactory&, const JsonNode& node) -> std::shared_ptr<const Material> {
-            return std::make_shared<Dielectric>(node.getFloat({"ior"}, 1.5f, Range::positive()));
+            return std::make_shared<Dielectric>(node.getFloat({"ior"}, 1.5f, kIorRange));
           }};
 }
 

@@ -41,15 +41,20 @@ std::optional<BsdfSample> OrenNayar::sample(const TextureQuery& q, const Vector3
   return makeSample(wo, eval(q, wi, wo, mode), pdf(q, wi, wo), kReflection | kDiffuse);
 }
 
+// The facets' slope deviation in radians: beyond π/2 a deviation of facet angles means
+// nothing (the model's A and B have long saturated).
+constexpr Range kSigmaRange{0.0f, kPi / 2};
+
 MaterialType orenNayarType() {
-  return {"oren-nayar",
-          {"oren_nayar"},
-          "rough diffuse reflection; albedo (0.8), sigma (0.35, slope deviation in radians)",
-          [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
-            TexturedColor albedo = f.parseAlbedo(node);
-            const float sigma = node.getFloat({"sigma"}, 0.35f, Range::nonNegative());
-            return std::make_shared<OrenNayar>(std::move(albedo), sigma);
-          }};
+  return {
+      "oren-nayar",
+      {"oren_nayar"},
+      "rough diffuse reflection; albedo (0.8), sigma (0.35, slope deviation in radians, 0 to π/2)",
+      [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
+        TexturedColor albedo = f.parseAlbedo(node);
+        const float sigma = node.getFloat({"sigma"}, 0.35f, kSigmaRange);
+        return std::make_shared<OrenNayar>(std::move(albedo), sigma);
+      }};
 }
 
 }  // namespace verity

@@ -76,8 +76,8 @@ void parseConductorIndex(const JsonNode& node, RoughConductor::Params& p) {
   }
   const auto eta = node.find({"ior"});
   const auto k = node.find({"ext"});
-  p.eta = eta ? Color3(eta->asVector3(Range::positive()).array()) : Color3::Constant(0.05f);
-  p.k = k ? Color3(k->asVector3(Range::nonNegative()).array()) : Color3::Constant(3.9f);
+  p.eta = eta ? Color3(eta->asVector3(kIorRange).array()) : Color3::Constant(0.05f);
+  p.k = k ? Color3(k->asVector3(kExtinctionRange).array()) : Color3::Constant(3.9f);
 }
 
 // DIRT's "beckmann" and the seed's "ggx": α given directly, the complex Fresnel term.
@@ -87,14 +87,14 @@ std::shared_ptr<const Material> buildComplexConductor(MicrofacetType type, Mater
   p.distribution = type;
   p.sampling = parseSampling(node);
   p.albedo = f.parseAlbedo(node);
-  p.roughness =
-      TexturedColor(Color3::Constant(node.getFloat({"ab", "alpha"}, 0.5f, Range::nonNegative())));
+  p.roughness = TexturedColor(Color3::Constant(node.getFloat({"ab", "alpha"}, 0.5f, kAlphaRange)));
   parseConductorIndex(node, p);
   return std::make_shared<RoughConductor>(std::move(p));
 }
 
 std::string complexKeys() {
-  return "albedo (0.8, a tint), ab or alpha (0.5), ior and ext (0.05 and 3.9, each a number "
+  return "albedo (0.8, a tint), ab or alpha (0.5, 1e-4 to 4), ior and ext (0.05 and 3.9, each a "
+         "number "
          "or [r, g, b]) or conductor (one of " +
          namedConductorList() + "), sampling (visible)";
 }
@@ -123,7 +123,7 @@ MaterialType metalType() {
   return {"metal",
           {},
           "DIRT's metal: a mirror at roughness 0, else GGX with alpha = roughness² and Schlick's "
-          "Fresnel with F0 = albedo; albedo (0.8), roughness (0), sampling (visible)",
+          "Fresnel with F0 = albedo; albedo (0.8), roughness (0, or 0.01 to 2), sampling (visible)",
           [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
             TexturedColor albedo = f.parseAlbedo(node);
             // A texture-valued roughness must not be negative where it is a constant (a
@@ -131,6 +131,14 @@ MaterialType metalType() {
             TexturedColor roughness = f.textures().parse(node, {"roughness"}, Color3::Zero());
             if (roughness.isConstant() && !(roughness.constant() >= 0).all())
               node[{"roughness"}].fail("roughness must not be negative");
+            // α = roughness² must lie in kAlphaRange (roughness in [0.01, 2]), or be 0 (a mirror).
+            if (roughness.isConstant()) {
+              const Color3 r = roughness.constant();
+              if (!(r == 0).all() && !(r >= 0.01f && r <= 2.0f).all())
+                node[{"roughness"}].fail(
+                    "roughness must be 0 (a mirror) or in [0.01, 2] (alpha = roughness² in [1e-4, "
+                    "4])");
+            }
             if (roughness.isConstant() && roughness.constant().mean() == 0)
               return std::make_shared<Mirror>(std::move(albedo));
             RoughConductor::Params p;

@@ -118,12 +118,13 @@ std::optional<BsdfSample> RoughDielectric::sample(const TextureQuery& q, const V
 MaterialType roughDielectricType() {
   return {"rough_dielectric",
           {"rough dielectric", "roughdielectric"},
-          "rough glass (Walter et al. 2007); distribution (ggx), alpha (0.1), ior (1.5), "
+          "rough glass (Walter et al. 2007); distribution (ggx), alpha (0.1, 1e-4 to 4), ior (1.5, "
+          "up to 100), "
           "sampling (visible)",
           [](MaterialFactory&, const JsonNode& node) -> std::shared_ptr<const Material> {
             const MicrofacetType distribution = parseDistribution(node);
-            const float alpha = node.getFloat({"alpha", "ab"}, 0.1f, Range::nonNegative());
-            const float ior = node.getFloat({"ior"}, 1.5f, Range::positive());
+            const float alpha = node.getFloat({"alpha", "ab"}, 0.1f, kAlphaRange);
+            const float ior = node.getFloat({"ior"}, 1.5f, kIorRange);
             return std::make_shared<RoughDielectric>(distribution, alpha, ior, parseSampling(node));
           }};
 }

@@ -38,7 +38,7 @@ std::string environmentScene(const std::string& camera) {
   "background": {"type": "image", "filename": ")" VERITY_SOURCE_DIR R"(/scenes/textures/earth.png"},
   "materials": [
     {"name": "floor", "type": "lambertian", "albedo": [0.5, 0.6, 0.7]},
-    {"name": "ball", "type": "oren_nayar", "albedo": 0.7, "sigma": 20},
+    {"name": "ball", "type": "oren_nayar", "albedo": 0.7, "sigma": 0.35},
     {"name": "light", "type": "diffuse light", "emit": 4}
   ],
   "surfaces": [

@@ -102,9 +102,10 @@ TEST(ConductorIndex, ErrorsNameTheKey) {
            Case{R"({"type":"ggx","conductor":"Au","ext":[1,2,3]})", "conductor:"},
            Case{R"({"type":"ggx","ior":[0.2,1.1]})", "ior: expected a number or an array of 3"},
            Case{R"({"type":"ggx","ext":[1,2,3,4]})", "ext: expected a number or an array of 3"},
-           Case{R"({"type":"ggx","ior":[0.2,0,1.1]})", "ior[1]: expected a number > 0"},
-           Case{R"({"type":"ggx","ext":[1,-2,3]})", "ext[1]: expected a number >= 0"},
-           Case{R"({"type":"beckmann","ior":0})", "ior: expected a number > 0"},
+           Case{R"({"type":"ggx","ior":[0.2,0,1.1]})", "ior[1]: expected a number in (0, 100]"},
+           Case{R"({"type":"ggx","ext":[1,-2,3]})", "ext[1]: expected a number in [0, 100]"},
+           Case{R"({"type":"beckmann","ior":0})", "ior: expected a number in (0, 100]"},
+           Case{R"({"type":"ggx","ext":1e3})", "ext: expected a number in [0, 100]"},
            Case{R"({"type":"ggx","ior":"Au"})", "ior: expected a number or an array of 3"},
            Case{R"({"type":"metal","roughness":0.3,"conductor":"Au"})", "conductor: unknown key"},
        }) {
