@@ -1,10 +1,13 @@
 // `verity render` refuses what it cannot honour before it renders: an output it could not
-// write (which would lose the render) and a bounce count beyond the supported limit.
+// write (which would lose the render), an empty output name, variance channels asked of a
+// PNG, a seed outside [0, 2⁶⁴ − 1] and a bounce count beyond the supported limit. And
+// --explain describes the chosen integrator's strategies (issue 26, items 7 and 10).
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
+#include "integrators/integrator_registry.h"
 #include "test_directory.h"
 #include "testing/child_process.h"
 
@@ -84,6 +87,72 @@ TEST_F(RenderCommand, BounceCountBeyondTheLimitIsRejected) {
   EXPECT_NE(outcome.status, 0);
   EXPECT_NE(outcome.stderrText.find("--max-bounces"), std::string::npos) << outcome.stderrText;
   EXPECT_FALSE(std::filesystem::exists(dir_ / "image.exr"));
+}
+
+// Saturating or wrapping would render one image for many seeds.
+TEST_F(RenderCommand, SeedOutsideItsRangeIsRefused) {
+  for (const char* seed : {"-1", "18446744073709551616", "1e30", "2.5", "seven"}) {
+    const auto outcome = render({"--seed", seed, "-o", (dir_ / "image.exr").string()});
+    EXPECT_NE(outcome.status, 0) << seed;
+    EXPECT_NE(outcome.stderrText.find("--seed"), std::string::npos) << outcome.stderrText;
+    EXPECT_FALSE(std::filesystem::exists(dir_ / "image.exr")) << seed;
+  }
+  const auto largest =
+      render({"--seed", "18446744073709551615", "-o", (dir_ / "image.exr").string()});
+  EXPECT_EQ(largest.status, 0) << largest.stderrText;
+}
+
+// An empty -o is not "no -o": it must not write <scene>.exr in the current directory.
+TEST_F(RenderCommand, EmptyOutputNameIsRefused) {
+  // In the test's directory, so that a default output would land there.
+  const auto outcome = testing::run(
+      {"/bin/sh", "-c",
+       "cd '" + dir_.string() + "' && '" VERITY_BINARY "' render scene.json --spp 1 -o ''"});
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.stderrText.find("-o: the output file name is empty"), std::string::npos)
+      << outcome.stderrText;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "scene.exr"));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "scene.png"));
+}
+
+TEST_F(RenderCommand, VarianceOfAPngIsRefused) {
+  const auto outcome = render({"--variance", "-o", (dir_ / "image.png").string()});
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.stderrText.find("--variance"), std::string::npos) << outcome.stderrText;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "image.png"));
+}
+
+// What `verity render --explain --integrator NAME` prints on stdout.
+std::string explain(const std::filesystem::path& dir, const std::string& scene,
+                    const std::string& integrator) {
+  const std::filesystem::path out = dir / ("explain-" + integrator + ".txt");
+  const auto outcome = testing::run({"/bin/sh", "-c",
+                                     "'" VERITY_BINARY "' render '" + scene + "' --integrator " +
+                                         integrator + " --explain > '" + out.string() + "'"});
+  EXPECT_EQ(outcome.status, 0) << outcome.stderrText;
+  std::ifstream in(out);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// Each radiance integrator's explanation names its own strategies, and no two agree.
+TEST_F(RenderCommand, ExplainDescribesTheChosenIntegrator) {
+  std::vector<std::string> strategyLines;
+  for (const std::string& name : radianceIntegrators()) {
+    const std::string text = explain(dir_, scene_, name);
+    EXPECT_NE(text.find("strategies: " + findIntegratorType(name)->strategies), std::string::npos)
+        << name << ":\n"
+        << text;
+    const size_t at = text.find("strategies: ");
+    ASSERT_NE(at, std::string::npos) << text;
+    strategyLines.push_back(text.substr(at, text.find('\n', at) - at));
+  }
+  for (size_t i = 0; i < strategyLines.size(); ++i)
+    for (size_t j = i + 1; j < strategyLines.size(); ++j)
+      EXPECT_NE(strategyLines[i], strategyLines[j]);
+  const std::string mats = explain(dir_, scene_, "path_tracer_mats");
+  EXPECT_EQ(mats.find("next-event"), std::string::npos) << mats;
+  const std::string normals = explain(dir_, scene_, "normals");
+  EXPECT_NE(normals.find("strategies: none"), std::string::npos) << normals;
 }
 
 }  // namespace

@@ -7,10 +7,12 @@
 #include <fstream>
 
 #include "commands/component_output.h"
+#include "commands/seed_option.h"
 #include "distributed/distributed_render.h"
 #include "film/image_io.h"
 #include "integrators/integrator_registry.h"
 #include "integrators/integrator_settings.h"
+#include "integrators/strategy_explanation.h"
 #include "render/interrupt.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
@@ -27,6 +29,7 @@ struct RenderArgs {
   std::string integrator;
   int maxBounces = -1;
   std::string output;
+  bool outputGiven = false;  // -o, even empty
   bool variance = false;
   bool explain = false;
   bool strict = false;      // the scene's warnings are errors
@@ -80,16 +83,23 @@ int run(const RenderArgs& args, const ProcessGroup& group) {
     if (!group.isRoot()) return 0;
     fmt::print("{}", file.scene->summary().explain());
     fmt::print("integrator: {} (max_bounces {})\n", settings.type, settings.maxBounces);
+    if (const IntegratorType* type = findIntegratorType(settings.type))
+      fmt::print("{}", explainStrategies(*type, file.scene->summary()));
     return 0;
   }
 
   std::vector<std::filesystem::path> outputs;
-  if (args.output.empty()) {
+  if (!args.outputGiven) {
     outputs = {file.name + ".exr", file.name + ".png"};
   } else {
+    if (args.output.empty()) throw VerityError("", "-o", "the output file name is empty");
     const std::string ext = lowerExtension(args.output);
     if (ext != ".exr" && ext != ".png")
       throw VerityError("", "-o", "the output must end in .exr or .png: \"" + args.output + "\"");
+    if (args.variance && ext == ".png")
+      throw VerityError("", "--variance",
+                        "the variance channels need an EXR output; a PNG holds only colour (\"" +
+                            args.output + "\")");
     outputs = {args.output};
   }
 
@@ -188,13 +198,13 @@ void addRenderCommand(CLI::App& app, const ProcessGroup& group) {
                   "Worker threads per process (default: all cores; under mpirun, the host's "
                   "cores shared among its ranks)")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--seed", args->seed, "Seed of the render's random numbers");
+  addSeedOption(cmd, args->seed, "Seed of the render's random numbers (0 to 2^64 - 1)");
   cmd->add_option("--integrator", args->integrator, integratorTypeList());
   cmd->add_option("--max-bounces", args->maxBounces,
                   "Maximum scattering events per path (0: emitters seen directly)")
       ->check(CLI::Range(0, kMaxBouncesLimit));
-  cmd->add_option("-o,--output", args->output,
-                  "Output .exr or .png (default: <scene name>.exr and .png here)");
+  CLI::Option* output = cmd->add_option(
+      "-o,--output", args->output, "Output .exr or .png (default: <scene name>.exr and .png here)");
   cmd->add_flag("--variance", args->variance,
                 "Add variance.R/G/B (per-sample variance) and samples channels to the EXR");
   auto* strategies = cmd->add_option(
@@ -208,7 +218,10 @@ void addRenderCommand(CLI::App& app, const ProcessGroup& group) {
                 "Refuse a scene the loader warns about (an albedo above 1, a light emitting 0)");
   cmd->add_flag("--explain", args->explain,
                 "Print what the scene calls for (emitters, lobes, textures, strategies) and exit");
-  cmd->callback([args, &group] { throw CLI::RuntimeError(run(*args, group)); });
+  cmd->callback([args, output, &group] {
+    args->outputGiven = output->count() > 0;
+    throw CLI::RuntimeError(run(*args, group));
+  });
 }
 
 }  // namespace verity

@@ -37,22 +37,35 @@ std::vector<IntegratorType> makeTable() {
                }});
   t.push_back({.name = "path_tracer_mats",
                .description = "path tracing by material sampling only (no shadow rays)",
+               .strategies = "emission found by material sampling alone: rays that hit an "
+                             "emitter or escape to the background; no shadow rays",
                .estimatesRadiance = true,
                .readsMaxBounces = true,
                .make = makePathTracer<PathTracer::Strategy::Materials>});
   t.push_back({.name = "path_tracer_nee",
                .description = "path tracing with next-event estimation",
+               .strategies = "next-event estimation (a shadow ray to a sampled point on a "
+                             "light or direction of the background) at non-delta surfaces; "
+                             "emission hit by material sampling only when seen directly or "
+                             "after a delta bounce",
                .estimatesRadiance = true,
                .readsMaxBounces = true,
                .make = makePathTracer<PathTracer::Strategy::NextEvent>});
   t.push_back({.name = "path_tracer_mis",
                .description = "path tracing, material and light samples combined by MIS",
+               .strategies = "material sampling and next-event estimation at non-delta "
+                             "surfaces, combined by multiple importance sampling (balance "
+                             "heuristic, or power heuristic with \"power\")",
                .estimatesRadiance = true,
                .readsMaxBounces = true,
                .readsMisPower = true,
                .make = makePathTracer<PathTracer::Strategy::Mis>});
   t.push_back({.name = "bdpt",
                .description = "bidirectional path tracing, MIS over every strategy (s, t)",
+               .strategies = "every connection (s, t) of a light subpath of s vertices and a "
+                             "camera subpath of t vertices, combined by multiple importance "
+                             "sampling; light subpaths connected to the lens (t = 1) are "
+                             "splatted",
                .estimatesRadiance = true,
                .readsMaxBounces = true,
                .readsMisPower = true,
@@ -62,6 +75,10 @@ std::vector<IntegratorType> makeTable() {
                }});
   t.push_back({.name = "light_tracer",
                .description = "light tracing: light subpaths splatted through the lens",
+               .strategies = "light subpaths connected to the lens (t = 1) and splatted: "
+                             "emitters and non-delta surfaces seen directly, and the background "
+                             "seen directly; nothing the camera sees only in a mirror or through "
+                             "smooth glass",
                .estimatesRadiance = true,
                .readsMaxBounces = true,
                .splatsOnly = true,

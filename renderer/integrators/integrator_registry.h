@@ -17,6 +17,9 @@ struct IntegratorType {
   std::string name;                  // canonical, as records and manifests spell it
   std::vector<std::string> aliases;  // other accepted spellings (spaces read as '_')
   std::string description;
+  // How it finds light, for --explain: the strategies it samples paths with, and the light it
+  // cannot find. Empty for the debugging views, which do not transport light.
+  std::string strategies;
   // An estimator of radiance (not a debugging view): the agreement, invariance and
   // stability suites must cover it.
   bool estimatesRadiance = false;

@@ -24,15 +24,7 @@ std::string SceneSummary::explain() const {
   s += fmt::format("materials: {} ({} with textured parameters, the rest cost no lookup)\n",
                    materials, texturedMaterials);
   s += fmt::format("delta (specular) lobes: {}\n", hasDeltaLobes ? "yes" : "no");
-  if (!hasEmitters()) {
-    s += "strategies: none can carry light; radiance integrators output black without "
-         "tracing a ray\n";
-  } else {
-    s += "strategies: emission hit by material sampling";
-    if (hasNonDeltaLobes) s += ", next-event estimation at non-delta surfaces";
-    if (!hasNonDeltaLobes) s += " (no non-delta surface: next-event estimation never runs)";
-    s += "\n";
-  }
+  // The strategies depend on the integrator: integrators/strategy_explanation.h.
   return s;
 }
 

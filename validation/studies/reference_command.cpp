@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "commands/seed_option.h"
 #include "integrators/integrator_settings.h"
 #include "validation/studies/reference.h"
 
@@ -28,7 +29,8 @@ void addReferenceCommand(CLI::App& app, const ProcessGroup& group) {
                   "Image width in pixels (the scene's aspect ratio is kept)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--dir", config->directory, "Output folder")->capture_default_str();
-  cmd->add_option("--seed", config->seed, "Seed (default: derived from the scene's name)");
+  addSeedOption(cmd, config->seed,
+                "Seed, 0 to 2^64 - 1 (default and 0: derived from the scene's name)");
   cmd->callback([config, &group] {
     const studies::ReferenceResult r = studies::makeReference(*config, group);
     if (!group.isRoot()) return;
