@@ -117,8 +117,8 @@ void addCompareCommand(CLI::App& app) {
   cmd->add_option("-a", args->a,
                   "Side A: one EXR with variance channels, or several independent renders "
                   "(at least 2; the variance from their spread, df = renders - 1)")
-      ->type_name("FILE...");
-  cmd->add_option("-b", args->b, "Side B, like -a")->type_name("FILE...");
+      ->type_name("FILE");
+  cmd->add_option("-b", args->b, "Side B, like -a")->type_name("FILE");
   cmd->add_option("--tile", args->tile, "Tile size in pixels, a whole number >= 1 (default 16)")
       ->type_name("INT");
   cmd->add_option("--alpha", args->alpha,
@@ -127,11 +127,14 @@ void addCompareCommand(CLI::App& app) {
       ->type_name("FLOAT");
   cmd->add_option("--layer", args->layer,
                   "Read a set's R, G, B from this EXR layer (LAYER.R, LAYER.G, LAYER.B) when "
-                  "its files have several");
-  cmd->add_option("-o,--json", args->json, "Also write every tile's test to this JSON file");
+                  "its files have several")
+      ->type_name("NAME");
+  cmd->add_option("-o,--json", args->json, "Also write every tile's test to this JSON file")
+      ->type_name("FILE");
   cmd->add_option("--z-image", args->zImage,
                   "Write a PNG of each tile's z-score (blue: B below A, red: B above; black "
-                  "outline: rejected)");
+                  "outline: rejected)")
+      ->type_name("FILE.png");
   cmd->callback([args] { throw CLI::RuntimeError(runReportingErrors(*args)); });
 }
 
