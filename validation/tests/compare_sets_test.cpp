@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <stb_image.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -87,7 +88,8 @@ class CompareSets : public ::testing::Test {
   // EXRs with the layer-prefixed names default.R, ... Changed: the right half 1% brighter in
   // albedo. Variance: one Verity EXR with variance channels of kRenders × kSpp samples.
   static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / "verity-compare-sets";
+    // One folder per process: ctest -j runs each test in a process of its own.
+    dir_ = fs::temp_directory_path() / ("verity-compare-sets-" + std::to_string(getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     for (int r = 0; r < kRenders; ++r) {
@@ -109,6 +111,8 @@ class CompareSets : public ::testing::Test {
     writeExr(variance_,
              filmChannels(render(0.5, "compare-sets variance image", kRenders * kSpp), true));
   }
+
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
 
   static fs::path dir_;
   static std::vector<std::string> a_, b_, changed_;
