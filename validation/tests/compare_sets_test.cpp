@@ -123,7 +123,9 @@ std::vector<std::string> CompareSets::a_, CompareSets::b_, CompareSets::changed_
 std::string CompareSets::variance_;
 
 TEST_F(CompareSets, TwoSetsWithDifferentSeedsAgree) {
-  const CompareOutcome o = runCompare(sideArguments(a_, b_));
+  std::vector<std::string> args = sideArguments(a_, b_);
+  args.insert(args.end(), {"--tile", "8"});
+  const CompareOutcome o = runCompare(args);
   EXPECT_EQ(o.status, 0) << o.text();
   EXPECT_NE(o.out.find(fmt::format("a set of {} renders", kRenders)), std::string::npos)
       << o.text();
@@ -133,7 +135,9 @@ TEST_F(CompareSets, TwoSetsWithDifferentSeedsAgree) {
 }
 
 TEST_F(CompareSets, VarianceImageAgainstASetAgrees) {
-  const CompareOutcome o = runCompare(sideArguments({variance_}, b_));
+  std::vector<std::string> args = sideArguments({variance_}, b_);
+  args.insert(args.end(), {"--tile", "8"});
+  const CompareOutcome o = runCompare(args);
   EXPECT_EQ(o.status, 0) << o.text();
   EXPECT_NE(o.out.find("one image with variance channels"), std::string::npos) << o.text();
 }
