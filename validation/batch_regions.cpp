@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "validation/stats/tile_grid.h"
 
 namespace verity::validation {
 
@@ -80,13 +81,12 @@ PixelStatistics BatchRegions::statistics() const {
 }
 
 std::vector<int> tileRegions(int width, int height, int tileSize, int* tiles) {
-  const int tilesX = (width + tileSize - 1) / tileSize;
-  const int tilesY = (height + tileSize - 1) / tileSize;
+  const TileGrid grid{width, height, tileSize};
   std::vector<int> region(size_t(width) * height);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x)
-      region[size_t(y) * width + x] = (y / tileSize) * tilesX + x / tileSize;
-  *tiles = tilesX * tilesY;
+      region[size_t(y) * width + x] = (y / tileSize) * grid.tilesX() + x / tileSize;
+  *tiles = grid.count();
   return region;
 }
 

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <functional>
 #include <stdexcept>
+#include <string_view>
 
 #include "core/error.h"
 #include "validation/batch_regions.h"
@@ -47,6 +49,7 @@ RenderSetSide::RenderSetSide(std::vector<std::string> files,
           fmt::format("{}x{} pixels, while {} of the same set has {}x{}", images[r].width,
                       images[r].height, files_.front(), first.width, first.height));
   }
+  requireDistinctPixels();
   const size_t n = size_t(width()) * height();
   finite_.assign(n, 1);
   for (const ImageChannels& render : renders_) {
@@ -62,6 +65,28 @@ RenderSetSide::RenderSetSide(std::vector<std::string> files,
     }
     nonfinite_.push_back(count);
   }
+}
+
+void RenderSetSide::requireDistinctPixels() const {
+  // Hashes first, so that only renders with equal hashes are compared value by value.
+  std::vector<size_t> digests;
+  for (const ImageChannels& render : renders_) {
+    size_t digest = 0;
+    for (int c = 0; c < kChannels; ++c) {
+      const std::vector<float>& plane = render.planes.at(kChannelNames[c]);
+      const std::string_view bytes(reinterpret_cast<const char*>(plane.data()),
+                                   plane.size() * sizeof(float));
+      digest = digest * 1000003 + std::hash<std::string_view>{}(bytes);
+    }
+    digests.push_back(digest);
+  }
+  for (size_t i = 0; i < renders_.size(); ++i)
+    for (size_t j = i + 1; j < renders_.size(); ++j)
+      if (digests[i] == digests[j] && renders_[i].planes == renders_[j].planes)
+        throw VerityError(files_[j], "",
+                          fmt::format("has the same R, G and B as \"{}\": one render written "
+                                      "twice is not two independent renders",
+                                      files_[i]));
 }
 
 RenderSetSide RenderSetSide::load(const std::vector<std::filesystem::path>& files,

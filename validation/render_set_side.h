@@ -24,8 +24,8 @@ class RenderSetSide : public ComparisonSide {
   static constexpr int kMinimumRenders = 2;
 
   // The renders `images` read from `files` (same order). Throws VerityError naming the file
-  // when it has no R, G and B (rgb_channels.h, `layer`) or another resolution than the
-  // first, and when there are fewer than kMinimumRenders.
+  // when it has no R, G and B (rgb_channels.h, `layer`), another resolution than the
+  // first or the same pixels as another, and when there are fewer than kMinimumRenders.
   RenderSetSide(std::vector<std::string> files, const std::vector<ImageChannels>& images,
                 const std::string& layer);
   // Reads the files (readExr) and keeps only their R, G and B.
@@ -43,6 +43,10 @@ class RenderSetSide : public ComparisonSide {
       const override;
 
  private:
+  // Two renders with the same R, G and B (one render written twice, in other files) are
+  // refused, naming both files.
+  void requireDistinctPixels() const;
+
   std::vector<std::string> files_;
   std::string label_;
   std::vector<ImageChannels> renders_;  // planes R, G and B only

@@ -117,6 +117,13 @@ TEST_F(CompareInputs, TheSameFileTwiceIsRefused) {
   auto b = set("b", 2);
   b.push_back(copy.string());
   expectBadInput(runCompare(sideArguments(a, b)), {"copy.exr", "a2.exr", "same bytes"});
+  // The same render written again with other bytes (a header attribute more).
+  ImageChannels again = readExr(a[1]);
+  again.attributes["note"] = "written again";
+  std::vector<std::string> withAgain = a;
+  withAgain.push_back(write("again", again));
+  expectBadInput(runCompare(sideArguments(withAgain, set("b", 2))),
+                 {"again.exr", "a1.exr", "same R, G and B"});
 }
 
 TEST_F(CompareInputs, NonFinitePixelsOfASetAreLeftOutAndCounted) {
