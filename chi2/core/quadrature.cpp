@@ -5,14 +5,66 @@
 #include <algorithm>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
+#include <limits>
 
 namespace verity::chi2 {
 
-using Kronrod = boost::math::quadrature::gauss_kronrod<double, 15>;
-
 namespace {
 
-// Bisection with Boost's 15-point Gauss–Kronrod rule on each piece. A piece is accepted once
+using Kronrod = boost::math::quadrature::gauss_kronrod<double, 15>;
+using Gauss = boost::math::quadrature::gauss<double, 7>;
+
+// A value of the integrand with the error it carries: the inner integral of a nested
+// quadrature, and that integral's own error estimate.
+struct Sample {
+  double value = 0, error = 0;
+};
+
+// One 15-point Gauss–Kronrod rule on [a, b]. `value` and `error` are bit for bit Boost's
+// gauss_kronrod<double, 15>::integrate(f, a, b, 0, 0, &error) (Boost 1.74-1.83,
+// integrate_non_adaptive_m1_1: the same nodes, weights and order of summation), so every
+// refinement decision is the one Boost's figures gave; `error` is therefore max(|K15 − G7|,
+// 2ε|K15|) on the rule's own [−1, 1], not yet multiplied by the half-width. `carried` is the
+// integrand's own error integrated by the same Kronrod rule (its weights are positive): for
+// a nested integral, ∫ |inner error| dx over the piece.
+struct Rule {
+  double value = 0, error = 0, carried = 0;
+};
+
+template <class F>
+Rule kronrod(const F& f, double a, double b) {
+  const double mean = (b + a) / 2, scale = (b - a) / 2;
+  const auto& x = Kronrod::abscissa();
+  const auto& wk = Kronrod::weights();
+  const auto& wg = Gauss::weights();
+  Sample s = f(scale * 0.0 + mean);
+  double k = s.value * wk[0], g = s.value * wg[0], c = s.error * wk[0];
+  // The Gauss nodes (even indices), then the Kronrod extension (odd), as Boost sums them.
+  for (unsigned i = 2; i < x.size(); i += 2) {
+    const Sample p = f(scale * x[i] + mean), m = f(scale * -x[i] + mean);
+    k += (p.value + m.value) * wk[i];
+    g += (p.value + m.value) * wg[i / 2];
+    c += (p.error + m.error) * wk[i];
+  }
+  for (unsigned i = 1; i < x.size(); i += 2) {
+    const Sample p = f(scale * x[i] + mean), m = f(scale * -x[i] + mean);
+    k += (p.value + m.value) * wk[i];
+    c += (p.error + m.error) * wk[i];
+  }
+  Rule r;
+  r.value = scale * k;
+  r.error = std::max(std::fabs(k - g), std::fabs(k * std::numeric_limits<double>::epsilon() * 2));
+  r.carried = scale * c;
+  return r;
+}
+
+// Where a 1D integral's error lies: its own rule's estimates and the error its integrand
+// carried (both in the integral's units).
+struct Errors {
+  double rule = 0, carried = 0;
+};
+
+// Bisection with the 15-point Gauss–Kronrod rule on each piece. A piece is accepted once
 // its error estimate is within its share, by width, of the interval's tolerance, or once
 // bisection stops reducing it. Boost's own
 // recursion tolerates only a fraction of the piece's own integral, which a piece a few ulps
@@ -23,47 +75,60 @@ namespace {
 // multiplied by the half-width (b − a)/2 as the integral is (Boost 1.74-1.83,
 // recursive_adaptive_integrate): on [0, 0.02], √x gets an estimate of 6.6e-5 against a true
 // error of 3.8e-8. The refinement below compares those unscaled figures, as it was tuned to;
-// what it reports, `errorSum`, is scaled to the integral's own units.
-double bisect(const std::function<double(double)>& f, double a, double b, double value,
-              double error, double tolerancePerWidth, unsigned depth, double* errorSum) {
-  if (depth == 0 || error <= tolerancePerWidth * (b - a)) {
-    *errorSum += error * (b - a) / 2;
-    return value;
+// what it reports is scaled to the integral's own units. The error an integrand carries
+// (an inner integral's) is summed over the accepted pieces only, each piece's by its own
+// Kronrod weights: the integral of that error over x, not a mean over the calls.
+template <class F>
+double bisect(const F& f, double a, double b, const Rule& whole, double tolerancePerWidth,
+              unsigned depth, Errors* errors) {
+  if (depth == 0 || whole.error <= tolerancePerWidth * (b - a)) {
+    errors->rule += whole.error * (b - a) / 2;
+    errors->carried += whole.carried;
+    return whole.value;
   }
   const double m = 0.5 * (a + b);
-  double e0 = 0, e1 = 0;
-  const double v0 = Kronrod::integrate(f, a, m, 0, 0, &e0);
-  const double v1 = Kronrod::integrate(f, m, b, 0, 0, &e1);
+  const Rule r0 = kronrod(f, a, m), r1 = kronrod(f, m, b);
+  const double e0 = r0.error, e1 = r1.error;
   // Round-off detection (as in QUADPACK's QAG, Piessens et al. 1983): bisection shrinks the
   // error of a smooth piece many times and that of a jump by half, but leaves the
   // staircase of a density evaluated in single precision as large as it was. Refining
   // noise buys nothing; accept the halves. A jump, a kink or a lobe that the halves find
   // and the whole missed can raise the error too, but it sits in one half (the halves'
   // errors are unequal) or moves the estimate by more than its error.
-  const bool noise = e0 + e1 > 0.8 * error && std::min(e0, e1) > 0.25 * std::max(e0, e1) &&
-                     std::fabs(v0 + v1 - value) <= 2 * error;
+  const bool noise = e0 + e1 > 0.8 * whole.error && std::min(e0, e1) > 0.25 * std::max(e0, e1) &&
+                     std::fabs(r0.value + r1.value - whole.value) <= 2 * whole.error;
   if (noise) {
-    *errorSum += (e0 + e1) * (b - a) / 4;
-    return v0 + v1;
+    errors->rule += (e0 + e1) * (b - a) / 4;
+    errors->carried += r0.carried + r1.carried;
+    return r0.value + r1.value;
   }
-  return bisect(f, a, m, v0, e0, tolerancePerWidth, depth - 1, errorSum) +
-         bisect(f, m, b, v1, e1, tolerancePerWidth, depth - 1, errorSum);
+  return bisect(f, a, m, r0, tolerancePerWidth, depth - 1, errors) +
+         bisect(f, m, b, r1, tolerancePerWidth, depth - 1, errors);
+}
+
+// The adaptive integral of an integrand that returns a Sample, to max(relTolerance·|∫f|,
+// absTolerance).
+template <class F>
+double adaptive(const F& f, double a, double b, const QuadratureOptions& options,
+                double absTolerance, Errors* errors) {
+  if (!(b > a)) return 0;
+  const Rule whole = kronrod(f, a, b);
+  const double tolerance = std::max(options.relTolerance * std::fabs(whole.value), absTolerance);
+  return bisect(f, a, b, whole, tolerance / (b - a), options.maxDepth, errors);
 }
 
 }  // namespace
 
 double integrate1D(const std::function<double(double)>& f, double a, double b,
                    const QuadratureOptions& options, double* error, double absTolerance) {
-  if (!(b > a)) {
-    if (error) *error = 0;
-    return 0;
-  }
-  double err = 0, sum = 0;
-  const double value = Kronrod::integrate(f, a, b, 0, 0, &err);
-  const double tolerance = std::max(options.relTolerance * std::fabs(value), absTolerance);
-  const double result = bisect(f, a, b, value, err, tolerance / (b - a), options.maxDepth, &sum);
-  if (error) *error = sum;
-  return result;
+  Errors errors;
+  const double value = adaptive(
+      [&](double x) {
+        return Sample{f(x), 0};
+      },
+      a, b, options, absTolerance, &errors);
+  if (error) *error = errors.rule;
+  return value;
 }
 
 namespace {
@@ -96,12 +161,14 @@ CellIntegral nested(const DensityFn& f, const BreakpointFn& breaks,
                     const std::vector<double>& xBreaks, const std::vector<Point2d>& peaks,
                     const Domain* domain, double x0, double x1, double y0, double y1,
                     const QuadratureOptions& options) {
-  double innerErrorSum = 0;
-  int innerCalls = 0;
+  // The inner integral at x with its error estimate, which the outer rule integrates over x
+  // with its own weights (the nested rule's error is at most the outer rule's error plus
+  // ∫ |inner error| dx). An unweighted mean over the calls would count a call on a piece
+  // graded 10⁻⁷ of a cell wide, next to a peak or a jump, as much as one on a whole cell.
   auto inner = [&](double x) {
     double lo = y0, hi = y1;
     if (domain) std::tie(lo, hi) = domain->clipY(x, y0, y1);
-    if (!(hi > lo)) return 0.0;
+    if (!(hi > lo)) return Sample{};
     // Split the y range at the density's jumps.
     std::vector<double> cuts;
     if (breaks)
@@ -113,19 +180,21 @@ CellIntegral nested(const DensityFn& f, const BreakpointFn& breaks,
     if (domain && domain->kind == DomainKind::Sphere)
       for (double pole : {-1.0, 1.0}) addGradedCuts(pole, 1.0, lo, hi, cuts);
     const std::vector<double> ys = pieces(lo, hi, std::move(cuts));
-    double v = 0;
+    Sample s;
     for (size_t k = 0; k + 1 < ys.size(); ++k) {
-      double err = 0;
+      Errors err;
       // The cell's absolute budget, spread over y; an inner error enters the cell times its
       // width.
       const double absTolerance =
           options.cellAbsTolerance * (ys[k + 1] - ys[k]) / ((y1 - y0) * (x1 - x0));
-      v += integrate1D([&](double y) { return f(x, y); }, ys[k], ys[k + 1], options, &err,
-                       absTolerance);
-      innerErrorSum += err;
+      s.value += adaptive(
+          [&](double y) {
+            return Sample{f(x, y), 0};
+          },
+          ys[k], ys[k + 1], options, absTolerance, &err);
+      s.error += err.rule;
     }
-    ++innerCalls;
-    return v;
+    return s;
   };
   std::vector<double> xCuts;
   for (double b : xBreaks)
@@ -136,12 +205,11 @@ CellIntegral nested(const DensityFn& f, const BreakpointFn& breaks,
   QuadratureOptions outer = options;
   outer.relTolerance = options.outerRelTolerance;
   for (size_t k = 0; k + 1 < xs.size(); ++k) {
-    double outerError = 0;
-    result.value += integrate1D(inner, xs[k], xs[k + 1], outer, &outerError,
-                                options.cellAbsTolerance * (xs[k + 1] - xs[k]) / (x1 - x0));
-    result.error += outerError;
+    Errors err;
+    result.value += adaptive(inner, xs[k], xs[k + 1], outer,
+                             options.cellAbsTolerance * (xs[k + 1] - xs[k]) / (x1 - x0), &err);
+    result.error += err.rule + err.carried;
   }
-  if (innerCalls) result.error += (x1 - x0) * innerErrorSum / innerCalls;
   return result;
 }
 

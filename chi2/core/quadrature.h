@@ -52,7 +52,9 @@ struct QuadratureOptions {
 
 struct CellIntegral {
   double value = 0;
-  double error = 0;  // Gauss–Kronrod error estimate (outer + mean inner); pessimistic
+  // Gauss–Kronrod error estimate in the integral's units: the outer rule's |K15 − G7| plus the
+  // inner integrals' estimates integrated over x by the outer rule's own weights.
+  double error = 0;
 };
 
 CellIntegral integrateCell(const DensityFn& f, const DensityFeatures& features,
