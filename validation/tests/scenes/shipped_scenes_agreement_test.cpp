@@ -6,10 +6,9 @@
 // max_bounces 5.
 //
 //   - Images. Per 16×16 tile and channel, a Welch t-test of one integrator's mean against the
-//     other's. The light tracer sees neither delta surfaces nor an emitting background directly
-//     (light_tracer.h), so its comparisons pool only the pixels that see neither, here or in a
-//     neighbour. One Holm correction (holm.h) over every test of every tile, scene and pair:
-//     family-wise level 1%.
+//     other's. The light tracer does not see delta surfaces (light_tracer.h), so its
+//     comparisons pool only the pixels that see none, here or in a neighbour. One Holm
+//     correction (holm.h) over every test of every tile, scene and pair: family-wise level 1%.
 //   - Path lengths (cornell-box). For each k = 0 … 5, BDPT's weighted strategies of length k
 //     summed against the path tracer's length-k image, per tile and channel; its own Holm
 //     family at 1%.
@@ -67,8 +66,8 @@ uint64_t seedOf(int scene, int integrator, int batch) {
   return kSeedBase + 100000 * uint64_t(scene) + 1000 * uint64_t(integrator) + uint64_t(batch);
 }
 
-// Whether each pixel sees, through a 5×5 grid of camera rays, only emitters and surfaces with
-// a non-delta lobe (no delta surface, no background), in itself and its 8 neighbours.
+// Whether each pixel sees, through a 5×5 grid of camera rays, only emitters, surfaces with a
+// non-delta lobe and the background (no delta surface), in itself and its 8 neighbours.
 std::vector<bool> lightTracerPixels(const SceneFile& file) {
   const Camera& camera = file.scene->camera();
   const int w = camera.resolution().x(), h = camera.resolution().y();
@@ -79,7 +78,7 @@ std::vector<bool> lightTracerPixels(const SceneFile& file) {
         SurfaceInteraction si;
         const Point2f film(x + (j % 5) / 4.0f, y + (j / 5) / 4.0f);
         const bool hit = file.scene->intersect(camera.generateRay(film, Point2f(0.5f, 0.5f)), si);
-        if (!hit || !(si.light || (si.material && si.material->hasNonDeltaLobe())))
+        if (hit && !(si.light || (si.material && si.material->hasNonDeltaLobe())))
           plain[size_t(y) * w + x] = false;
       }
   std::vector<bool> usable(plain.size(), true);
