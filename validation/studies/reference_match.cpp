@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "core/error.h"
 
 namespace verity::studies {
@@ -23,6 +25,14 @@ void checkReferenceMatches(const std::filesystem::path& referenceFile,
                            const ImageChannels& reference, const std::filesystem::path& scene,
                            const Vector2i& resolution, bool force,
                            const std::function<void(const std::string&)>& log) {
+  for (const auto& [name, plane] : reference.planes)
+    for (size_t i = 0; i < plane.size(); ++i)
+      if (!std::isfinite(plane[i]))
+        throw VerityError(
+            referenceFile.string(), "",
+            fmt::format("channel {} at pixel ({}, {}) is {}: every error measured "
+                        "against it would be meaningless; make the reference again",
+                        name, i % size_t(reference.width), i / size_t(reference.width), plane[i]));
   if (reference.width != resolution.x() || reference.height != resolution.y())
     throw VerityError(
         referenceFile.string(), "",

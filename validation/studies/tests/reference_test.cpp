@@ -2,7 +2,7 @@
 //   - A reference whose values half floats cannot hold (a visible emitter of radiance 1e5) is
 //     written in 32-bit floats, never with Inf; a dim one stays in half floats.
 //   - A study refuses a reference of another scene unless forced, and one of another
-//     resolution always, before it renders anything.
+//     resolution or holding Inf always, before it renders anything.
 #include "validation/studies/reference.h"
 
 #include <gtest/gtest.h>
@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include "core/error.h"
 #include "film/image_io.h"
@@ -134,6 +135,23 @@ TEST_F(ReferenceTest, StudyRefusesAReferenceOfAnotherResolution) {
     ADD_FAILURE() << "a 4×4 reference for an 8×8 study was accepted";
   } catch (const VerityError& e) {
     EXPECT_NE(std::string(e.what()).find("4×4"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "results.jsonl")) << "nothing may be rendered";
+}
+
+// A reference written before references were checked can hold Inf (issue 26, item 5).
+TEST_F(ReferenceTest, StudyRefusesAReferenceHoldingInf) {
+  const fs::path a = writeScene("a", 1);
+  ImageChannels image = readExr(reference(a).image);
+  image.planes.at("variance.G")[3] = std::numeric_limits<float>::infinity();
+  const fs::path broken = dir_ / "broken.exr";
+  writeExr(broken, image);
+  try {
+    runConvergenceStudy(study(a, broken), nullptr);
+    ADD_FAILURE() << "a reference holding Inf was accepted";
+  } catch (const VerityError& e) {
+    EXPECT_NE(std::string(e.what()).find("variance.G at pixel (3, 0)"), std::string::npos)
+        << e.what();
   }
   EXPECT_FALSE(fs::exists(dir_ / "results.jsonl")) << "nothing may be rendered";
 }
