@@ -22,7 +22,6 @@
 //   if (!r.passed()) std::cout << r.report();
 #pragma once
 
-#include <cstdint>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -85,14 +84,7 @@ BsdfModel bsdfModel(SampleFn sample, EvalFn eval, PdfFn pdf) {
   return m;
 }
 
-struct BsdfCheckOptions {
-  std::string name = "bsdf";  // also the seed's source (seedFromName) unless seed is set
-  // The per-test level in (0, 1), required: e.g. sidakLevel(0.01, kStatisticalTestsPerCheck · n)
-  // for n checks at a family-wise level of 1%.
-  double significance = 0;
-  long long samples = 1'000'000;
-  std::optional<uint64_t> seed;
-  int resolution = 32;  // cells in cos θ; twice as many in φ
+struct BsdfCheckOptions : CheckOptions {
   bool checkReciprocity = true;
 };
 

@@ -7,11 +7,27 @@
 
 namespace verity::chi2 {
 
+CheckResult runCheck(const Subject& subject, const CheckOptions& options,
+                     const std::string& seedName) {
+  TestOptions o;
+  o.samples = options.samples;
+  o.significance = options.significance;
+  o.seed = options.seed ? *options.seed : seedFromName(seedName);
+  CheckResult r;
+  r.test = runSamplingTest(subject, o);
+  return r;
+}
+
 std::vector<std::string> CheckResult::failures() const {
   std::vector<std::string> out;
-  if (!test.chiSquare.passed(test.significance)) out.push_back("chi-square");
   if (test.outside > 0) out.push_back("samples outside the domain");
-  if (!test.integral.passed) out.push_back("pdf integral");
+  // An inconclusive test's statistics are the quadrature's, not the sampler's.
+  if (test.verdict() == Verdict::Inconclusive) {
+    out.push_back("inconclusive");
+  } else {
+    if (!test.chiSquare.passed(test.significance)) out.push_back("chi-square");
+    if (!test.integral.passed) out.push_back("pdf integral");
+  }
   for (int d = 0; d < static_cast<int>(Defect::Count); ++d)
     if (test.audit.count(static_cast<Defect>(d)) > 0)
       out.push_back(defectName(static_cast<Defect>(d)));

@@ -8,14 +8,8 @@ CheckResult checkWarp(const WarpModel& model, const WarpCheckOptions& options) {
   const int resolution = options.resolution > 0        ? options.resolution
                          : isDirectional(model.domain) ? 32
                                                        : 40;
-  const WarpSubject subject(options.name, model, resolution);
-  TestOptions o;
-  o.samples = options.samples;
-  o.significance = options.significance;
-  o.seed = options.seed ? *options.seed : seedFromName(options.name);
-  CheckResult r;
-  r.test = runSamplingTest(subject, o);
-  return r;
+  const std::string name = options.name.empty() ? "warp" : options.name;
+  return runCheck(WarpSubject(name, model, resolution), options, name);
 }
 
 }  // namespace verity::chi2

@@ -13,7 +13,6 @@
 //   CheckResult r = checkWarp(diskWarp<Vec2>(concentricDisk, diskPdf), options);
 #pragma once
 
-#include <cstdint>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -88,16 +87,7 @@ WarpModel sphereWarp(SampleFn sample, PdfFn pdf) {
   return detail::warpModel<P, 3>(WarpDomain::Sphere, std::move(sample), std::move(pdf));
 }
 
-struct WarpCheckOptions {
-  std::string name = "warp";  // also the seed's source (seedFromName) unless seed is set
-  // The per-test level in (0, 1), required (as in BsdfCheckOptions).
-  double significance = 0;
-  long long samples = 1'000'000;
-  std::optional<uint64_t> seed;
-  // Cells along each side of a planar domain, or in cos θ on the sphere (twice as many in
-  // φ); 0: 40 planar, 32 on the sphere, as in Verity's suite.
-  int resolution = 0;
-};
+using WarpCheckOptions = CheckOptions;
 
 CheckResult checkWarp(const WarpModel& model, const WarpCheckOptions& options);
 
