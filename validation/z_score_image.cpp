@@ -19,6 +19,7 @@ constexpr unsigned char kCoolWarm[9][3] = {{59, 76, 192},   {98, 130, 234},  {14
                                            {244, 154, 123}, {222, 96, 77},   {180, 4, 38}};
 constexpr std::array<unsigned char, 3> kUntested = {64, 64, 64};
 constexpr std::array<unsigned char, 3> kRejectedOutline = {0, 0, 0};
+constexpr int kMinimumWidth = 256;
 
 }  // namespace
 
@@ -38,36 +39,42 @@ void writeZScoreImage(const std::filesystem::path& file, const ComparisonResult&
   const boost::math::normal normal;
   const double zMax = boost::math::quantile(
       boost::math::complement(normal, r.options.alpha / (2.0 * r.tests.size())));
-  std::vector<unsigned char> pixels(size_t(r.width) * r.height * 3);
-  const auto fill = [&](const TileRect& rect, const std::array<unsigned char, 3>& rgb,
-                        bool outline) {
-    for (int y = rect.y0; y < rect.y1; ++y)
-      for (int x = rect.x0; x < rect.x1; ++x) {
-        const bool edge = x == rect.x0 || y == rect.y0 || x == rect.x1 - 1 || y == rect.y1 - 1;
-        const auto& colour = outline && edge ? kRejectedOutline : rgb;
-        std::copy(colour.begin(), colour.end(), pixels.begin() + 3 * (size_t(y) * r.width + x));
-      }
-  };
   const TileGrid grid{r.width, r.height, r.options.tileSize};
-  for (int ty = 0; ty < r.tilesY; ++ty)
-    for (int tx = 0; tx < r.tilesX; ++tx) fill(grid.rect(tx, ty), kUntested, false);
-  // Tests are tile-major: a tile's channels are consecutive.
-  for (size_t i = 0; i < r.tests.size();) {
-    size_t worst = i;
+  struct Mark {
+    std::array<unsigned char, 3> colour = kUntested;
     bool rejected = false;
-    size_t j = i;
-    for (; j < r.tests.size() && r.tests[j].tileX == r.tests[i].tileX &&
-           r.tests[j].tileY == r.tests[i].tileY;
-         ++j) {
-      if (std::abs(r.tests[j].z) > std::abs(r.tests[worst].z)) worst = j;
-      rejected |= r.tests[j].rejected;
+  };
+  std::vector<Mark> marks(grid.count());
+  // Tests are tile-major: a tile's channels are consecutive; the largest |z| colours it.
+  double largest = -1;
+  for (size_t i = 0; i < r.tests.size(); ++i) {
+    const TileTest& t = r.tests[i];
+    const bool first = i == 0 || r.tests[i - 1].tileX != t.tileX || r.tests[i - 1].tileY != t.tileY;
+    Mark& mark = marks[t.tileY * grid.tilesX() + t.tileX];
+    if (first) largest = -1;
+    if (std::abs(t.z) > largest) {
+      largest = std::abs(t.z);
+      mark.colour = divergingColour(t.z, zMax);
     }
-    const TileRect& rect = r.tests[i].rect;
-    fill(rect, divergingColour(r.tests[worst].z, zMax),
-         rejected && rect.x1 - rect.x0 >= 3 && rect.y1 - rect.y0 >= 3);
-    i = j;
+    mark.rejected |= t.rejected;
   }
-  if (!stbi_write_png(file.string().c_str(), r.width, r.height, 3, pixels.data(), r.width * 3))
+  // Small images (this project's references are 32 to 64 pixels wide) are enlarged by a
+  // whole factor k to at least kMinimumWidth, so that the tiles can be seen; outlines are
+  // one pixel of the enlarged image.
+  const int k = std::max(1, (kMinimumWidth + r.width - 1) / r.width);
+  const int width = r.width * k, height = r.height * k;
+  std::vector<unsigned char> pixels(size_t(width) * height * 3);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const int tx = x / k / grid.tileSize, ty = y / k / grid.tileSize;
+      const TileRect rect = grid.rect(tx, ty);
+      const Mark& mark = marks[ty * grid.tilesX() + tx];
+      const bool edge =
+          x == rect.x0 * k || y == rect.y0 * k || x == rect.x1 * k - 1 || y == rect.y1 * k - 1;
+      const auto& colour = mark.rejected && edge ? kRejectedOutline : mark.colour;
+      std::copy(colour.begin(), colour.end(), pixels.begin() + 3 * (size_t(y) * width + x));
+    }
+  if (!stbi_write_png(file.string().c_str(), width, height, 3, pixels.data(), width * 3))
     throw VerityError(file.string(), "", "cannot write the z-score PNG");
 }
 

@@ -1,4 +1,5 @@
-// A picture of where two images differ, at the images' resolution so that it overlays them:
+// A picture of where two images differ, at the images' resolution so that it overlays them
+// (an image narrower than 256 pixels enlarged by a whole factor to at least 256):
 // each tested tile is filled with the colour of its most significant channel's z-score
 // (TileTest::z, the normal deviate of the Welch p-value, signed like B − A) on Moreland's
 // cool-warm diverging map (K. Moreland 2009, "Diverging Color Maps for Scientific

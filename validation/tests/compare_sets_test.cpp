@@ -173,13 +173,14 @@ TEST_F(CompareSets, OnePercentChangeInOneMaterialIsRejected) {
       kSpp, kRenders, 100 * worstRightBias, rejectedRight);
   EXPECT_LT(worstRightBias, 0.01);
   EXPECT_GT(rejectedRight, 0);
-  // The z-score picture: the image's size, red (B above A) inside the right half's tiles.
+  // The z-score picture: the image enlarged 8 times (to 256 pixels), red (B above A) inside
+  // the right half's tiles.
   int w = 0, h = 0, n = 0;
   unsigned char* pixels = stbi_load(png.string().c_str(), &w, &h, &n, 3);
   ASSERT_NE(pixels, nullptr);
-  EXPECT_EQ(w, 32);
-  EXPECT_EQ(h, 32);
-  const unsigned char* inside = pixels + 3 * (12 * 32 + 28);  // tile (3, 1), not its outline
+  EXPECT_EQ(w, 256);
+  EXPECT_EQ(h, 256);
+  const unsigned char* inside = pixels + 3 * (8 * 12 * 256 + 8 * 28);  // tile (3, 1), inside
   EXPECT_GT(inside[0], inside[2] + 60) << int(inside[0]) << " " << int(inside[2]);
   stbi_image_free(pixels);
 }
