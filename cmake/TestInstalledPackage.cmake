@@ -1,0 +1,39 @@
+# Installs Verity from a build tree to a fresh prefix, then configures, builds and tests
+# examples/external-bsdf against that prefix alone, so that a broken install rule (a header
+# or library left out, a wrong include path, a dependency the package config does not find)
+# fails the suite. Run by CTest as
+#   cmake -DBUILD_DIR=<build> -DSOURCE_DIR=<source> -DWORK_DIR=<scratch> [-DGENERATOR=...]
+#         [-DCXX_COMPILER=...] -P TestInstalledPackage.cmake
+foreach(var BUILD_DIR SOURCE_DIR WORK_DIR)
+  if(NOT ${var})
+    message(FATAL_ERROR "TestInstalledPackage: -D${var}=... is required")
+  endif()
+endforeach()
+
+file(REMOVE_RECURSE ${WORK_DIR})
+set(prefix ${WORK_DIR}/prefix)
+set(example_build ${WORK_DIR}/external-bsdf)
+
+function(run step)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "TestInstalledPackage: ${step} failed (${rc}): ${ARGN}")
+  endif()
+endfunction()
+
+run(install ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+set(configure ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/external-bsdf -B ${example_build}
+              -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
+if(GENERATOR)
+  list(APPEND configure -G ${GENERATOR})
+endif()
+if(CXX_COMPILER)
+  list(APPEND configure -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
+endif()
+if(CXX_COMPILER_LAUNCHER)
+  list(APPEND configure -DCMAKE_CXX_COMPILER_LAUNCHER=${CXX_COMPILER_LAUNCHER})
+endif()
+run(configure ${configure})
+run(build ${CMAKE_COMMAND} --build ${example_build})
+run(test ${CMAKE_CTEST_COMMAND} --test-dir ${example_build} --output-on-failure)
+message(STATUS "TestInstalledPackage: examples/external-bsdf built and passed against ${prefix}")
