@@ -119,6 +119,52 @@ scenes["visible-light"] = (
     + block(BLACK, quad((-0.6, 1.9, -0.5), (0.6, 1.9, -0.5), (0.6, 1.2, 0.5), (-0.6, 1.2, 0.5)),
             light='AreaLightSource "diffuse" "rgb L" [ 6 6 6 ]'))
 
+import math
+
+
+def smooth_sphere(radius, rings, segments, normals=True):
+    """A coarse UV sphere as one triangle mesh with per-vertex normals (the normalised
+    positions): its shading normals differ from its flat triangles' normals. Faces wind so that
+    their front faces point outwards."""
+    pts, nrm, idx = [], [], []
+    for i in range(rings + 1):
+        theta = math.pi * i / rings
+        for j in range(segments):
+            phi = 2 * math.pi * j / segments
+            d = (math.sin(theta) * math.cos(phi), math.cos(theta), math.sin(theta) * math.sin(phi))
+            pts.append(tuple(radius * c for c in d))
+            nrm.append(d)
+    for i in range(rings):
+        for j in range(segments):
+            a, b = i * segments + j, i * segments + (j + 1) % segments
+            c, d = a + segments, b + segments
+            if i > 0:
+                idx += [a, b, c]
+            if i < rings - 1:
+                idx += [b, d, c]
+    fmt = lambda v: "  ".join(" ".join(f"{x:.6f}" for x in p) for p in v)
+    return ('  Shape "trianglemesh"\n'
+            f'      "integer indices" [ {" ".join(map(str, idx))} ]\n'
+            f'      "point3 P" [ {fmt(pts)} ]\n'
+            + (f'      "normal N" [ {fmt(nrm)} ]\n' if normals else ""))
+
+
+scenes["shading-normals"] = (
+    header("shading-normals: a coarse sphere (6 rings, 8 segments) with per-vertex normals, grey "
+           "diffuse, lit by a one-sided quad light above it that the camera does not see.",
+           "0 0.2 -3  0 0 0  0 1 0", fov=30)
+    + block(BLACK, quad((-0.5, 1.5, -1.2), (0.5, 1.5, -1.2), (0.5, 1.5, -0.2), (-0.5, 1.5, -0.2)),
+            light='AreaLightSource "diffuse" "rgb L" [ 6 6 6 ]')
+    + block(DIFFUSE, smooth_sphere(0.7, 6, 8)))
+
+# The control: the same triangles without per-vertex normals (flat shading).
+scenes["flat-normals"] = (
+    header("flat-normals: shading-normals without its per-vertex normals: the same coarse "
+           "sphere, flat shaded, under the same light.", "0 0.2 -3  0 0 0  0 1 0", fov=30)
+    + block(BLACK, quad((-0.5, 1.5, -1.2), (0.5, 1.5, -1.2), (0.5, 1.5, -0.2), (-0.5, 1.5, -0.2)),
+            light='AreaLightSource "diffuse" "rgb L" [ 6 6 6 ]')
+    + block(DIFFUSE, smooth_sphere(0.7, 6, 8, normals=False)))
+
 for name, text in scenes.items():
     (HERE / f"{name}.pbrt").write_text(text)
 
@@ -139,3 +185,121 @@ INTEGRATORS = {
 (HERE / "integrators").mkdir(exist_ok=True)
 for name, line in INTEGRATORS.items():
     (HERE / "integrators" / f"{name}.pbrt").write_text(line + "\n")
+
+# ---------------------------------------------------------------------------------------------
+# Twins: scenes that exist both as pbrt-v4 and as Verity (DIRT JSON) files, written from one
+# description so that both hold the same triangles, spheres, materials and camera. pbrt-v4's
+# renders of them are a second independent reference for Verity (references/pbrt-v4/README.md).
+import json
+import re
+
+TWIN_MATERIALS = {
+    "white": ('Material "diffuse" "rgb reflectance" [ 0.5 0.5 0.5 ]',
+              {"type": "lambertian", "albedo": [0.5, 0.5, 0.5]}),
+    "bright": ('Material "diffuse" "rgb reflectance" [ 0.8 0.8 0.8 ]',
+               {"type": "lambertian", "albedo": [0.8, 0.8, 0.8]}),
+    "light": (BLACK, {"type": "diffuse_light", "emit": [6, 6, 6]}),
+    "rough-conductor": (f'Material "conductor" {CONDUCTOR} "float roughness" [ 0.2 ] '
+                        '"bool remaproughness" false',
+                        {"type": "ggx", "ab": 0.2, "ior": 0.2, "ext": 3.0, "albedo": 1}),
+    "rough-glass-0.3": ('Material "dielectric" "float eta" [ 1.5 ] "float roughness" [ 0.3 ] '
+                        '"bool remaproughness" false',
+                        {"type": "rough_dielectric", "distribution": "ggx", "alpha": 0.3,
+                         "ior": 1.5}),
+    "rough-glass-0.1": ('Material "dielectric" "float eta" [ 1.5 ] "float roughness" [ 0.1 ] '
+                        '"bool remaproughness" false',
+                        {"type": "rough_dielectric", "distribution": "ggx", "alpha": 0.1,
+                         "ior": 1.5}),
+    "glass": ('Material "dielectric" "float eta" [ 1.5 ]', {"type": "dielectric", "ior": 1.5}),
+}
+LIGHT_L = 6
+
+BOX_QUADS = [
+    (((-1, 0, -1), (-1, 0, 1), (1, 0, 1), (1, 0, -1)), "white"),
+    (((-1, 2, -1), (1, 2, -1), (1, 2, 1), (-1, 2, 1)), "white"),
+    (((-1, 0, 1), (-1, 2, 1), (1, 2, 1), (1, 0, 1)), "white"),
+    (((-1, 0, -1), (-1, 2, -1), (-1, 2, 1), (-1, 0, 1)), "white"),
+    (((1, 0, -1), (1, 0, 1), (1, 2, 1), (1, 2, -1)), "white"),
+    (((-0.4, 1.99, -0.4), (0.4, 1.99, -0.4), (0.4, 1.99, 0.4), (-0.4, 1.99, 0.4)), "light"),
+]
+BOX_CAMERA = ((0, 1, -3.4), (0, 1, 0), (0, 1, 0))
+
+TWINS = {
+    "area-box": dict(
+        comment="area-box: a grey diffuse box lit by a one-sided quad light on its ceiling; a "
+                "diffuse sphere and a rough conductor sphere (GGX alpha 0.2).",
+        camera=BOX_CAMERA, quads=BOX_QUADS,
+        spheres=[((-0.45, 0.45, 0.2), 0.45, "bright"), ((0.5, 0.4, -0.2), 0.4, "rough-conductor")]),
+    "rough-glass-box": dict(
+        comment="rough-glass-box: the grey box with its ceiling light and two rough dielectric "
+                "spheres (eta 1.5; GGX alpha 0.3 left, 0.1 right).",
+        camera=BOX_CAMERA, quads=BOX_QUADS,
+        spheres=[((-0.45, 0.42, 0.1), 0.42, "rough-glass-0.3"),
+                 ((0.5, 0.4, -0.15), 0.4, "rough-glass-0.1")]),
+    "glass-box": dict(
+        comment="glass-box: the grey box with its ceiling light, a smooth glass sphere (eta 1.5) "
+                "and a diffuse sphere (0.8).",
+        camera=BOX_CAMERA, quads=BOX_QUADS,
+        spheres=[((-0.45, 0.42, 0.1), 0.42, "glass"), ((0.5, 0.4, -0.15), 0.4, "bright")]),
+    "env-spheres": dict(
+        comment="env-spheres: a uniform infinite light (L = 1) over a grey ground that fills the "
+                "view; a diffuse sphere (0.8) and a rough dielectric sphere (eta 1.5, GGX alpha "
+                "0.3).",
+        camera=((0, 3.2, -1.6), (0, 0, 0.3), (0, 1, 0)),
+        quads=[(((-10, 0, -10), (-10, 0, 10), (10, 0, 10), (10, 0, -10)), "white")],
+        spheres=[((-0.55, 0.4, 0.5), 0.4, "bright"), ((0.5, 0.4, 0.1), 0.4, "rough-glass-0.3")],
+        background=1),
+}
+
+
+def vec(p):
+    return " ".join(f"{c:g}" for c in p)
+
+
+def twin_pbrt(name, t):
+    (cf, ca, cu) = t["camera"]
+    s = header(t["comment"], f"{vec(cf)}  {vec(ca)}  {vec(cu)}")
+    if t.get("background"):
+        b = t["background"]
+        s += f'LightSource "infinite" "rgb L" [ {b} {b} {b} ]\n'
+    for pts, mat in t["quads"]:
+        light = (f'AreaLightSource "diffuse" "rgb L" [ {LIGHT_L} {LIGHT_L} {LIGHT_L} ]'
+                 if mat == "light" else None)
+        s += block(TWIN_MATERIALS[mat][0], quad(*pts), light=light)
+    for centre, r, mat in t["spheres"]:
+        s += block(TWIN_MATERIALS[mat][0], sphere(r), translate=vec(centre))
+    return s
+
+
+def twin_verity(name, t):
+    (cf, ca, cu) = t["camera"]
+    used = sorted({m for _, m in t["quads"]} | {m for _, _, m in t["spheres"]})
+    surfaces = []
+    for pts, mat in t["quads"]:
+        for tri in ((pts[0], pts[1], pts[2]), (pts[0], pts[2], pts[3])):
+            surfaces.append({"type": "triangle", "positions": [list(p) for p in tri],
+                             "material": mat})
+    for centre, r, mat in t["spheres"]:
+        surfaces.append({"type": "sphere", "radius": r, "transform": {"translate": list(centre)},
+                         "material": mat})
+    scene = {
+        "camera": {"transform": {"from": list(cf), "at": list(ca), "up": list(cu)},
+                   "vfov": 40, "resolution": [32, 32]},
+        "integrator": {"type": "path_tracer_mis", "max_bounces": 5},
+        "sampler": {"type": "independent"},
+        "image_samples": 256,
+    }
+    if t.get("background"):
+        scene["background"] = t["background"]
+    scene["materials"] = [dict(name=m, **TWIN_MATERIALS[m][1]) for m in used]
+    scene["surfaces"] = surfaces
+    text = json.dumps(scene, indent=2)
+    # Lists of numbers on one line.
+    return re.sub(r"\[\s*([-0-9.e,\s]+?)\s*\]",
+                  lambda m: "[" + ", ".join(x.strip() for x in m.group(1).split(",")) + "]",
+                  text) + "\n"
+
+
+for name, t in TWINS.items():
+    (HERE / f"{name}.pbrt").write_text(twin_pbrt(name, t))
+    (HERE / f"{name}.json").write_text(twin_verity(name, t))
