@@ -63,6 +63,26 @@ std::string tileBiasLine(const ComparisonResult& r) {
                      percent(biases.back()), biases.size(), r.tests.size());
 }
 
+// "rejected tiles (x,y channels): (2,0 RGB) (3,1 G) ...", at most kListed tiles.
+std::string rejectedTilesLine(const ComparisonResult& r) {
+  constexpr int kListed = 24;
+  std::vector<std::string> tiles;
+  int total = 0;
+  for (size_t i = 0; i < r.tests.size();) {
+    std::string channels;
+    size_t j = i;
+    for (; j < r.tests.size() && r.tests[j].tileX == r.tests[i].tileX &&
+           r.tests[j].tileY == r.tests[i].tileY;
+         ++j)
+      if (r.tests[j].rejected) channels += kChannelNames[r.tests[j].channel];
+    if (!channels.empty() && ++total <= kListed)
+      tiles.push_back(fmt::format("({},{} {})", r.tests[i].tileX, r.tests[i].tileY, channels));
+    i = j;
+  }
+  return fmt::format("rejected tiles (x,y channels): {}{}\n", fmt::join(tiles, " "),
+                     total > kListed ? fmt::format(" and {} more", total - kListed) : "");
+}
+
 }  // namespace
 
 std::string comparisonSummary(const ComparisonResult& r, size_t worstCount) {
@@ -82,6 +102,7 @@ std::string comparisonSummary(const ComparisonResult& r, size_t worstCount) {
   s += fmt::format("smallest p: {:.3g}\n", r.smallestP);
   s += fmt::format("Holm-Bonferroni at family-wise level {}: {} of {} tests rejected\n",
                    percent(o.alpha), r.holm.rejections, r.tests.size());
+  if (r.holm.rejections > 0) s += rejectedTilesLine(r);
   std::string perChannel;
   for (int c = 0; c < kChannels; ++c)
     perChannel += r.uniformity[c].n > 0

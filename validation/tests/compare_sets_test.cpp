@@ -173,6 +173,9 @@ TEST_F(CompareSets, OnePercentChangeInOneMaterialIsRejected) {
       kSpp, kRenders, 100 * worstRightBias, rejectedRight);
   EXPECT_LT(worstRightBias, 0.01);
   EXPECT_GT(rejectedRight, 0);
+  // The summary lists the rejected tiles, with the channels rejected.
+  EXPECT_NE(o.out.find("rejected tiles (x,y channels): (2,0 "), std::string::npos) << o.text();
+  EXPECT_EQ(o.out.find("(0,0 "), std::string::npos) << o.text();
   // The z-score picture: the image enlarged 8 times (to 256 pixels), red (B above A) inside
   // the right half's tiles.
   int w = 0, h = 0, n = 0;
