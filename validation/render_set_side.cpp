@@ -53,11 +53,12 @@ RenderSetSide::RenderSetSide(std::vector<std::string> files,
   const size_t n = size_t(width()) * height();
   finite_.assign(n, 1);
   for (const ImageChannels& render : renders_) {
+    const std::vector<float>* planes[kChannels];
+    for (int c = 0; c < kChannels; ++c) planes[c] = &render.planes.at(kChannelNames[c]);
     int count = 0;
     for (size_t i = 0; i < n; ++i) {
       bool finite = true;
-      for (int c = 0; c < kChannels; ++c)
-        finite &= std::isfinite(render.planes.at(kChannelNames[c])[i]);
+      for (int c = 0; c < kChannels; ++c) finite &= std::isfinite((*planes[c])[i]);
       if (!finite) {
         ++count;
         finite_[i] = 0;
