@@ -109,10 +109,23 @@ TEST_F(RenderCommand, EmptyOutputNameIsRefused) {
       {"/bin/sh", "-c",
        "cd '" + dir_.string() + "' && '" VERITY_BINARY "' render scene.json --spp 1 -o ''"});
   EXPECT_EQ(outcome.status, 1);
-  EXPECT_NE(outcome.stderrText.find("-o: the output file name is empty"), std::string::npos)
+  EXPECT_NE(outcome.stderrText.find("-o: the name given is empty"), std::string::npos)
       << outcome.stderrText;
   EXPECT_FALSE(std::filesystem::exists(dir_ / "scene.exr"));
   EXPECT_FALSE(std::filesystem::exists(dir_ / "scene.png"));
+}
+
+// An empty component folder is not "no component images": it would drop them in silence.
+TEST_F(RenderCommand, EmptyComponentFolderIsRefused) {
+  for (const char* option : {"--strategies", "--path-lengths"}) {
+    const auto outcome =
+        render({"--integrator", "bdpt", option, "", "-o", (dir_ / "image.exr").string()});
+    EXPECT_EQ(outcome.status, 1) << option;
+    EXPECT_NE(outcome.stderrText.find(std::string(option) + ": the name given is empty"),
+              std::string::npos)
+        << outcome.stderrText;
+    EXPECT_FALSE(std::filesystem::exists(dir_ / "image.exr")) << option;
+  }
 }
 
 TEST_F(RenderCommand, VarianceOfAPngIsRefused) {

@@ -29,7 +29,6 @@ struct RenderArgs {
   std::string integrator;
   int maxBounces = -1;
   std::string output;
-  bool outputGiven = false;  // -o, even empty
   bool variance = false;
   bool explain = false;
   bool strict = false;      // the scene's warnings are errors
@@ -89,10 +88,9 @@ int run(const RenderArgs& args, const ProcessGroup& group) {
   }
 
   std::vector<std::filesystem::path> outputs;
-  if (!args.outputGiven) {
+  if (args.output.empty()) {
     outputs = {file.name + ".exr", file.name + ".png"};
   } else {
-    if (args.output.empty()) throw VerityError("", "-o", "the output file name is empty");
     const std::string ext = lowerExtension(args.output);
     if (ext != ".exr" && ext != ".png")
       throw VerityError("", "-o", "the output must end in .exr or .png: \"" + args.output + "\"");
@@ -211,15 +209,21 @@ void addRenderCommand(CLI::App& app, const ProcessGroup& group) {
       "--strategies", args->strategies,
       "Directory for the MIS-weighted and unweighted image of every BDPT strategy (s, t) and "
       "a manifest.json (bdpt only)");
-  cmd->add_option("--path-lengths", args->pathLengths,
-                  "Directory for one image per path length (bounces) and a manifest.json")
-      ->excludes(strategies);
+  CLI::Option* pathLengths =
+      cmd->add_option("--path-lengths", args->pathLengths,
+                      "Directory for one image per path length (bounces) and a manifest.json")
+          ->excludes(strategies);
   cmd->add_flag("--strict", args->strict,
                 "Refuse a scene the loader warns about (an albedo above 1, a light emitting 0)");
   cmd->add_flag("--explain", args->explain,
                 "Print what the scene calls for (emitters, lobes, textures, strategies) and exit");
-  cmd->callback([args, output, &group] {
-    args->outputGiven = output->count() > 0;
+  cmd->callback([=, &group] {
+    // An empty name given is not the default (which an empty value would otherwise select).
+    for (const auto& [option, name] :
+         {std::pair{output, "-o"}, std::pair{strategies, "--strategies"},
+          std::pair{pathLengths, "--path-lengths"}})
+      if (option->count() > 0 && option->as<std::string>().empty())
+        throw VerityError("", name, "the name given is empty");
     throw CLI::RuntimeError(run(*args, group));
   });
 }
