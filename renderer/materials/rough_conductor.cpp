@@ -139,6 +139,12 @@ MaterialType metalType() {
                     "roughness must be 0 (a mirror) or in [0.01, 2] (alpha = roughness² in [1e-4, "
                     "4])");
             }
+            // A texture can only be bounded above here; its values below 0.01 act as 0.01 (the
+            // microfacet distribution's smallest α).
+            if (!roughness.isConstant() && roughness.upperBound() > 2)
+              node[{"roughness"}].fail(fmt::format(
+                  "a roughness texture that reaches {:g}, above 2 (alpha = roughness² above 4)",
+                  roughness.upperBound()));
             if (roughness.isConstant() && roughness.constant().mean() == 0)
               return std::make_shared<Mirror>(std::move(albedo));
             RoughConductor::Params p;
