@@ -250,7 +250,29 @@ CellIntegral integrateCell(const DensityFn& f, const DensityFeatures& features, 
     // What the cell may be off by, in absolute terms, whatever its pieces' sizes.
     o.cellAbsTolerance = o.relTolerance * estimate;
   }
-  return nested(f, features.breaksY, features.breaksX, near, &d, x0, x0 + w, y0, y0 + h, o);
+  const CellIntegral coarse =
+      nested(f, features.breaksY, features.breaksX, near, &d, x0, x0 + w, y0, y0 + h, o);
+  if (options.verifyDepth == 0 || !(coarse.error > options.gridAbsTolerance / d.cells()))
+    return coarse;
+  // The cell missed its share of the budget. Either a feature is not yet resolved, or the
+  // density is a staircase of single-precision rounding steps (grazing Beckmann and GGX,
+  // tiny roughness, the cancellation in ωi + ωo near −ωi): then every piece's |K15 − G7|
+  // stays at the steps' size however far it is bisected, and the sum counts their errors,
+  // of either sign, in absolute value (10⁻⁴ and more of a cell whose value moves by 10⁻⁷
+  // when refined). So compare two refinement levels: integrate again with every piece
+  // bisected verifyDepth more times and tolerances ten times tighter, and keep the finer
+  // value. Where the refinement converges (the finer error at most half the coarser), the
+  // finer value's error is at most the change |fine − coarse|; its own Gauss–Kronrod
+  // estimate is the other bound, and the smaller of the two is reported. A feature that
+  // neither level resolves moves the value between the levels and keeps the estimate up.
+  QuadratureOptions fine = o;
+  fine.maxDepth += options.verifyDepth;
+  fine.relTolerance /= 10;
+  fine.outerRelTolerance /= 10;
+  fine.cellAbsTolerance /= 10;
+  const CellIntegral r =
+      nested(f, features.breaksY, features.breaksX, near, &d, x0, x0 + w, y0, y0 + h, fine);
+  return {r.value, std::min(r.error, std::fabs(r.value - coarse.value))};
 }
 
 std::vector<CellIntegral> integrateGrid(const DensityFn& f, const Domain& domain,

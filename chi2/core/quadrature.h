@@ -48,12 +48,17 @@ struct QuadratureOptions {
   // Set per cell from gridAbsTolerance: an absolute error that every piece may claim its
   // share of, so that pieces a few ulps wide (graded towards a peak) stop refining.
   double cellAbsTolerance = 0;
+  // A cell whose error estimate exceeds its share of gridAbsTolerance is integrated again
+  // with this many more bisections and ten times tighter tolerances, and the two levels
+  // are compared (integrateCell); 0 turns the comparison off.
+  unsigned verifyDepth = 2;
 };
 
 struct CellIntegral {
   double value = 0;
-  // Gauss–Kronrod error estimate in the integral's units: the outer rule's |K15 − G7| plus the
-  // inner integrals' estimates integrated over x by the outer rule's own weights.
+  // Error estimate in the integral's units: the outer rule's |K15 − G7| plus the inner
+  // integrals' estimates integrated over x by the outer rule's own weights; for a cell
+  // compared at two refinement levels, the smaller of that and the levels' difference.
   double error = 0;
 };
 

@@ -93,6 +93,34 @@ TEST(FrameworkQuadratureBounds, TwoDimensionalShapes) {
   }
 }
 
+TEST(FrameworkQuadratureBounds, UnresolvableRippleIsNotSummedAsError) {
+  // A Gaussian of σ = 10⁻³ with a 1% ripple of wavelength π·10⁻⁸, far below any piece: as a
+  // density evaluated in single precision is a staircase of rounding steps, this one is
+  // noise at every scale the quadrature reaches. Each piece's |K15 − G7| stays at the
+  // ripple's size however far it is bisected, and their sum counts errors of either sign in
+  // absolute value. The ripple's own integral vanishes (its Fourier transform at that
+  // frequency, exp(−2π²σ²/λ²), is 0 in any precision), so the truth is 1.
+  const double s = 1e-3, lambda = kPi * 1e-8;
+  const DensityFn f = [s, lambda](double x, double y) {
+    const double dx = x - 0.3, dy = y - 0.7;
+    const double ripple =
+        1 + 0.01 * std::sin(2 * kPi * dx / lambda) * std::sin(2 * kPi * dy / lambda);
+    return ripple * std::exp(-(dx * dx + dy * dy) / (2 * s * s)) / (2 * kPi * s * s);
+  };
+  DensityFeatures features;
+  features.peaks = {Point2d(0.3, 0.7)};
+  QuadratureOptions single;
+  single.verifyDepth = 0;
+  double singleError = 0;
+  for (const CellIntegral& c : integrateGrid(f, squareDomain(4), single, features))
+    singleError += c.error;
+  const CellIntegral r = grid(f, squareDomain(4), features);
+  EXPECT_GE(r.error, std::fabs(r.value - 1)) << "value " << r.value;
+  // One level alone sums the ripple (1.2e-3, an INCONCLUSIVE verdict); two levels agree to
+  // 1.3e-12 of a true error of 4e-14.
+  EXPECT_LT(r.error, 1e-3 * singleError) << "one level " << singleError << ", two " << r.error;
+}
+
 TEST(FrameworkQuadratureBounds, GradedPiecesDoNotInflateTheEstimate) {
   // 1 for x < 0.5, 0 beyond, except on a sliver 10⁻⁷ wide (declared by its abscissae, as a
   // light's edge along a meridian is) where the density is 1 below an undeclared jump at

@@ -24,7 +24,7 @@ class SquareSubject : public Subject {
     if (kind_ == Kind::HiddenSpike) {
       // A 1/r singularity at (0.3, 0.3): integrable, but nothing the graded cuts know of.
       const double r = std::hypot(x - 0.3, y - 0.3);
-      return scale_ * 0.01 / std::max(r, 1e-300);
+      return scale_ * 0.1 / std::max(r, 1e-300);
     }
     return kind_ == Kind::Declines ? 0.0 : scale_;
   }
