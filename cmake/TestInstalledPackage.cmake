@@ -3,7 +3,8 @@
 # or library left out, a wrong include path, a dependency the package config does not find)
 # fails the suite. Run by CTest as
 #   cmake -DBUILD_DIR=<build> -DSOURCE_DIR=<source> -DWORK_DIR=<scratch> [-DGENERATOR=...]
-#         [-DCXX_COMPILER=...] -P TestInstalledPackage.cmake
+#         [-DCXX_COMPILER=...] [-DCXX_COMPILER_LAUNCHER=...] [-DCXX_FLAGS=...]
+#         [-DEXE_LINKER_FLAGS=...] -P TestInstalledPackage.cmake
 foreach(var BUILD_DIR SOURCE_DIR WORK_DIR)
   if(NOT ${var})
     message(FATAL_ERROR "TestInstalledPackage: -D${var}=... is required")
@@ -32,6 +33,13 @@ if(CXX_COMPILER)
 endif()
 if(CXX_COMPILER_LAUNCHER)
   list(APPEND configure -DCMAKE_CXX_COMPILER_LAUNCHER=${CXX_COMPILER_LAUNCHER})
+endif()
+# The build's own flags (a sanitizer build's library needs its runtime in the example too).
+if(CXX_FLAGS)
+  list(APPEND configure "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}")
+endif()
+if(EXE_LINKER_FLAGS)
+  list(APPEND configure "-DCMAKE_EXE_LINKER_FLAGS=${EXE_LINKER_FLAGS}")
 endif()
 run(configure ${configure})
 run(build ${CMAKE_COMMAND} --build ${example_build})
