@@ -21,7 +21,11 @@ std::string token(double v) {
 
 const double kAlphas[] = {0.01, 0.05, 0.1, 0.3, 0.6, 1.0};
 const double kIncidences[] = {0, 30, 60, 80, 89, 89.9};
-const double kIors[] = {1.001, 1.33, 1.5, 2.4, 1 / 1.001, 1 / 1.33, 1 / 1.5, 1 / 2.4};
+// An index within 1e-3 of 1 is index-matched: RoughDielectric turns into a smooth
+// pass-through there, a delta lobe the histogram cannot see (rough_dielectric.h), and the
+// test would be INCONCLUSIVE with no valid sample. 1/1.001 = 0.999001 lies inside that band
+// (it "passed" having tested nothing); 1/1.002 = 0.998004 is the nearest below 1 outside it.
+const double kIors[] = {1.001, 1.33, 1.5, 2.4, 1 / 1.002, 1 / 1.33, 1 / 1.5, 1 / 2.4};
 const char* kSamplings[] = {"visible", "normals"};
 const char* kDistributions[] = {"beckmann", "ggx"};
 
@@ -170,6 +174,28 @@ std::vector<BsdfCase> bsdfCases() {
     }
   // The quick subset: every 25th configuration, a fixed stride over all material types.
   for (size_t i = 0; i < v.size(); ++i) v[i].quick = i % 25 == 0;
+  // The extremes of what `verity chi2` accepts (issue 26), appended after the stride so that
+  // the quick subset stays as it was: exactly grazing incidence (wi.z = cos 90° = 6e-17 in
+  // single precision) and 1e-4 from it, for D(m)cos θm sampling, whose reflection Jacobian
+  // 1/(4 wi·h) grows without bound as wo nears −wi; the smallest roughness the material
+  // accepts (alpha 1e-4) and 1e-3 at normal incidence; the smallest index outside the
+  // index-matched band (rough_dielectric.h) at oblique and normal incidence.
+  const size_t extremes = v.size();
+  for (const char* d : kDistributions)
+    for (double th : {90.0, 89.9999})
+      add(fmt::format("{}_normals_a0p3_extreme", d),
+          fmt::format(R"({{"type":"{}","alpha":0.3,"ior":0.34,"ext":3.9,"sampling":"normals"}})",
+                      d),
+          th, false, false);
+  add("ggx_visible_a0p0001_extreme", R"({"type":"ggx","alpha":0.0001,"ior":0.34,"ext":3.9})", 30,
+      false, false);
+  add("ggx_visible_a0p001_extreme", R"({"type":"ggx","alpha":0.001,"ior":0.34,"ext":3.9})", 0,
+      false, false);
+  for (double th : {30.0, 0.0})
+    add("roughdielectric_ggx_visible_a0p1_ior1p001_extreme",
+        R"({"type":"rough_dielectric","distribution":"ggx","alpha":0.1,"ior":1.001})", th, false,
+        false);
+  for (size_t i = extremes; i < v.size(); ++i) v[i].quick = false;
   return v;
 }
 

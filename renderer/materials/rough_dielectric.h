@@ -9,9 +9,12 @@
 // with η² = ηi² in TransportMode::Radiance (Walter eq. 21 with light arriving along wo)
 // and ηo² for importance. Hence generalised reciprocity, in radiance mode:
 // f(wi, wo) / ηi² = f(wo, wi) / ηo², and the importance-mode f is the radiance-mode f
-// with its arguments swapped. An index-matched interface (|ior − 1| <= 1e-3) is treated
-// as smooth: its refraction lobe is narrower than 1e-3 rad and its half-vector formulas
-// lose all precision as ior → 1.
+// with its arguments swapped. An index-matched interface (|ior − 1| <= 1e-3, so 1.001 and
+// 1/1.001 included, 1.002 and 1/1.002 not) is treated as smooth: its refraction lobe is
+// narrower than 1e-3 rad and its half-vector formulas lose all precision as ior → 1. There
+// sample() draws only delta lobes (Fresnel reflection or straight pass-through, as the
+// smooth dielectric does) and eval() and pdf() are 0: a chi-square test of it has no valid
+// sample and is INCONCLUSIVE, never PASSED (chi2/tests/degenerate_test.cpp).
 #pragma once
 
 #include "materials/material.h"
