@@ -263,8 +263,11 @@ CellIntegral integrateCell(const DensityFn& f, const DensityFeatures& features, 
   // bisected verifyDepth more times and tolerances ten times tighter, and keep the finer
   // value. Where the refinement converges (the finer error at most half the coarser), the
   // finer value's error is at most the change |fine − coarse|; its own Gauss–Kronrod
-  // estimate is the other bound, and the smaller of the two is reported. A feature that
-  // neither level resolves moves the value between the levels and keeps the estimate up.
+  // estimate is the other bound, and the smaller of the two is reported. This is a
+  // heuristic, as Gauss–Kronrod's own estimate is: a feature that the deeper level begins
+  // to resolve moves the value and keeps the estimate up, but a lobe narrower than both
+  // levels' pieces and not declared (Subject::peaks) can escape both, as it escapes any
+  // rule (FrameworkQuadratureBounds tests the shapes the subjects have).
   QuadratureOptions fine = o;
   fine.maxDepth += options.verifyDepth;
   fine.relTolerance /= 10;
