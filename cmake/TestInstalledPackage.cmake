@@ -5,7 +5,15 @@
 #   cmake -DBUILD_DIR=<build> -DSOURCE_DIR=<source> -DWORK_DIR=<scratch> [-DGENERATOR=...]
 #         [-DCXX_COMPILER=...] [-DCXX_COMPILER_LAUNCHER=...] [-DCXX_FLAGS=...]
 #         [-DEXE_LINKER_FLAGS=...] -P TestInstalledPackage.cmake
-foreach(var BUILD_DIR SOURCE_DIR WORK_DIR)
+#
+# With -DCHECKS_ONLY=ON, BUILD_DIR is not needed: the package is first configured and built
+# here from SOURCE_DIR with VERITY_CHECKS_ONLY (no renderer, Embree, OpenEXR or MPI), so that
+# the installed libraries are shown to build without the renderer.
+set(required SOURCE_DIR WORK_DIR)
+if(NOT CHECKS_ONLY)
+  list(APPEND required BUILD_DIR)
+endif()
+foreach(var ${required})
   if(NOT ${var})
     message(FATAL_ERROR "TestInstalledPackage: -D${var}=... is required")
   endif()
@@ -22,26 +30,34 @@ function(run step)
   endif()
 endfunction()
 
-run(install ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
-set(configure ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/external-bsdf -B ${example_build}
-              -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
+# The settings of the build under test, for every project configured here.
+set(settings -DCMAKE_BUILD_TYPE=Release)
 if(GENERATOR)
-  list(APPEND configure -G ${GENERATOR})
+  list(APPEND settings -G ${GENERATOR})
 endif()
 if(CXX_COMPILER)
-  list(APPEND configure -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
+  list(APPEND settings -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
 endif()
 if(CXX_COMPILER_LAUNCHER)
-  list(APPEND configure -DCMAKE_CXX_COMPILER_LAUNCHER=${CXX_COMPILER_LAUNCHER})
+  list(APPEND settings -DCMAKE_CXX_COMPILER_LAUNCHER=${CXX_COMPILER_LAUNCHER})
 endif()
 # The build's own flags (a sanitizer build's library needs its runtime in the example too).
 if(CXX_FLAGS)
-  list(APPEND configure "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}")
+  list(APPEND settings "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}")
 endif()
 if(EXE_LINKER_FLAGS)
-  list(APPEND configure "-DCMAKE_EXE_LINKER_FLAGS=${EXE_LINKER_FLAGS}")
+  list(APPEND settings "-DCMAKE_EXE_LINKER_FLAGS=${EXE_LINKER_FLAGS}")
 endif()
-run(configure ${configure})
+
+if(CHECKS_ONLY)
+  set(BUILD_DIR ${WORK_DIR}/verity-checks-only)
+  run(configure-checks-only ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${BUILD_DIR}
+      -DVERITY_CHECKS_ONLY=ON ${settings})
+  run(build-checks-only ${CMAKE_COMMAND} --build ${BUILD_DIR})
+endif()
+run(install ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+run(configure ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/external-bsdf -B ${example_build}
+    -DCMAKE_PREFIX_PATH=${prefix} ${settings})
 run(build ${CMAKE_COMMAND} --build ${example_build})
 run(test ${CMAKE_CTEST_COMMAND} --test-dir ${example_build} --output-on-failure)
 message(STATUS "TestInstalledPackage: examples/external-bsdf built and passed against ${prefix}")
