@@ -16,14 +16,13 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
 
 #include "film/image_io.h"
+#include "peer_comparison.h"
 #include "scene/scene_loader.h"
 #include "validation/batch_regions.h"
 #include "validation/comparison_family.h"
@@ -62,31 +61,11 @@ const Case kCases[] = {
     {"env-spheres", {"path_tracer_mats", "path_tracer_mis", "bdpt"}}};
 
 std::vector<std::filesystem::path> pbrtRenders(const std::string& scene) {
-  std::vector<std::filesystem::path> renders;
-  const std::filesystem::path folder = kSource / "references" / "pbrt-v4" / scene / "path";
-  if (!std::filesystem::is_directory(folder)) return renders;
-  for (const auto& entry : std::filesystem::directory_iterator(folder))
-    if (entry.path().extension() == ".exr" && entry.path().stem().string().starts_with("seed-"))
-      renders.push_back(entry.path());
-  std::sort(renders.begin(), renders.end());
-  return renders;
-}
-
-// The relative difference of the whole image's mean (b − a) / a per channel, with its standard
-// error, from two single-region batch statistics.
-std::string relativeDifference(const PixelStatistics& a, const PixelStatistics& b) {
-  std::string out;
-  for (int c = 0; c < kChannels; ++c) {
-    const double ma = a.mean[c][0], mb = b.mean[c][0];
-    const double se = std::sqrt(a.variance[c][0] / a.samples[0] * mb * mb / (ma * ma) +
-                                b.variance[c][0] / b.samples[0]) /
-                      ma;
-    out += fmt::format("{}{:+.2f}% ± {:.2f}%", c ? " / " : "", 100 * (mb / ma - 1), 100 * se);
-  }
-  return out;
+  return peerRenders(kSource / "references" / "pbrt-v4" / scene / "path", "seed-");
 }
 
 TEST(Pbrt4Crosscheck, OurIntegratorsAgreeWithPbrt4) {
+  const PeerComparison setup{"pbrt-v4", "pbrt-v4 ", kTileSize, kBatches, kBatchSpp};
   ComparisonFamily family(kFamilyWiseLevel);
   fmt::print("| scene | integrator | image mean against pbrt-v4, R / G / B (± 1 s.e.) |\n");
   for (const Case& c : kCases) {
@@ -94,30 +73,8 @@ TEST(Pbrt4Crosscheck, OurIntegratorsAgreeWithPbrt4) {
     ASSERT_EQ(renders.size(), 16u) << c.scene << ": pbrt-v4 renders missing";
     const SceneFile file =
         loadScene(kSource / "scenes" / "pbrt-v4" / (std::string(c.scene) + ".json"));
-    const Vector2i res = file.scene->camera().resolution();
-    int tiles = 0;
-    const std::vector<int> regionOf = tileRegions(res.x(), res.y(), kTileSize, &tiles);
-    const std::vector<int> whole(regionOf.size(), 0);
-    BatchRegions pbrt(regionOf, tiles, std::string(c.scene) + " pbrt-v4");
-    BatchRegions pbrtImage(whole, 1, std::string(c.scene) + " pbrt-v4 image");
-    for (const std::filesystem::path& r : renders) {
-      const ImageChannels image = readExr(r);
-      pbrt.addBatch(image);
-      pbrtImage.addBatch(image);
-    }
-    for (const char* integratorName : c.integrators) {
-      const std::string key = fmt::format("pbrt-v4 {} {}", c.scene, integratorName);
-      BatchRegions ours(regionOf, tiles, key), oursImage(whole, 1, key + " image");
-      const uint64_t invalid = studies::renderBatches(file, integratorName, -1, kBatches, kBatchSpp,
-                                                      key, [&](const Film& film) {
-                                                        ours.addBatch(film);
-                                                        oursImage.addBatch(film);
-                                                      });
-      EXPECT_EQ(invalid, 0u) << key;
-      fmt::print("| {} | {} | {} |\n", c.scene, integratorName,
-                 relativeDifference(pbrtImage.statistics(), oursImage.statistics()));
-      family.add(key, pbrt.statistics(), ours.statistics());
-    }
+    EXPECT_EQ(compareWithPeer(setup, file, c.scene, renders, c.integrators, family), 0u)
+        << c.scene << ": invalid samples";
   }
   EXPECT_EQ(family.decide("against pbrt-v4").rejections, 0);
 }

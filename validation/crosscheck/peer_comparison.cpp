@@ -1,0 +1,75 @@
+#include "peer_comparison.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "film/image_io.h"
+#include "validation/batch_regions.h"
+#include "validation/studies/timed_render.h"
+
+namespace verity::validation {
+
+namespace {
+
+// The relative difference of the whole image's mean (b − a) / a per channel, with its standard
+// error, from two single-region batch statistics.
+std::string relativeDifference(const PixelStatistics& a, const PixelStatistics& b) {
+  std::string out;
+  for (int c = 0; c < kChannels; ++c) {
+    const double ma = a.mean[c][0], mb = b.mean[c][0];
+    const double se = std::sqrt(a.variance[c][0] / a.samples[0] * mb * mb / (ma * ma) +
+                                b.variance[c][0] / b.samples[0]) /
+                      ma;
+    out += fmt::format("{}{:+.2f}% ± {:.2f}%", c ? " / " : "", 100 * (mb / ma - 1), 100 * se);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> peerRenders(const std::filesystem::path& folder,
+                                               const std::string& prefix) {
+  std::vector<std::filesystem::path> renders;
+  if (!std::filesystem::is_directory(folder)) return renders;
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    if (entry.path().extension() == ".exr" && entry.path().stem().string().starts_with(prefix))
+      renders.push_back(entry.path());
+  std::sort(renders.begin(), renders.end());
+  return renders;
+}
+
+uint64_t compareWithPeer(const PeerComparison& setup, const SceneFile& file,
+                         const std::string& scene,
+                         const std::vector<std::filesystem::path>& renders,
+                         const std::vector<const char*>& integrators, ComparisonFamily& family) {
+  const Vector2i res = file.scene->camera().resolution();
+  int tiles = 0;
+  const std::vector<int> regionOf = tileRegions(res.x(), res.y(), setup.tileSize, &tiles);
+  // Tiles for the tests; the whole image as one region for the table.
+  const std::vector<int> whole(regionOf.size(), 0);
+  BatchRegions peer(regionOf, tiles, scene + " " + setup.peer);
+  BatchRegions peerImage(whole, 1, scene + " " + setup.peer + " image");
+  for (const std::filesystem::path& r : renders) {
+    const ImageChannels image = readExr(r);
+    peer.addBatch(image);
+    peerImage.addBatch(image);
+  }
+  uint64_t invalid = 0;
+  for (const char* integratorName : integrators) {
+    const std::string key = fmt::format("{}{} {}", setup.keyPrefix, scene, integratorName);
+    BatchRegions ours(regionOf, tiles, key), oursImage(whole, 1, key + " image");
+    invalid += studies::renderBatches(file, integratorName, -1, setup.batches, setup.batchSpp, key,
+                                      [&](const Film& film) {
+                                        ours.addBatch(film);
+                                        oursImage.addBatch(film);
+                                      });
+    fmt::print("| {} | {} | {} |\n", scene, integratorName,
+               relativeDifference(peerImage.statistics(), oursImage.statistics()));
+    family.add(key, peer.statistics(), ours.statistics());
+  }
+  return invalid;
+}
+
+}  // namespace verity::validation
