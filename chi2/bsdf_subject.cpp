@@ -47,10 +47,12 @@ BsdfModel materialModel(std::shared_ptr<const Material> material) {
     if (!s) return std::nullopt;
     return DirectionSample{s->wo.cast<double>(), s->weight.cast<double>(), s->pdf, s->isDelta()};
   };
-  m.eval = [material](const Vector3d& wi, const Vector3d& wo) {
+  // The return type is spelled out: a deduced one would be Eigen's cast expression over the
+  // temporary colour that eval() returns, read after that temporary is gone.
+  m.eval = [material](const Vector3d& wi, const Vector3d& wo) -> Eigen::Array3d {
     return material->eval(query, single(wi), single(wo), TransportMode::Radiance).cast<double>();
   };
-  m.evalAdjoint = [material](const Vector3d& wi, const Vector3d& wo) {
+  m.evalAdjoint = [material](const Vector3d& wi, const Vector3d& wo) -> Eigen::Array3d {
     return material->eval(query, single(wi), single(wo), TransportMode::Importance).cast<double>();
   };
   m.pdf = [material](const Vector3d& wi, const Vector3d& wo) {
