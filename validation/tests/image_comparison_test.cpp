@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "synthetic_images.h"
+#include "testing/error_of.h"
 #include "validation/comparison_report.h"
 #include "validation/exr_statistics.h"
 #include "validation/stats/power.h"
@@ -19,17 +20,6 @@ namespace {
 
 using testing::exponentialImage;
 using testing::normalImage;
-
-// The message of the VerityError `f` throws ("" when none).
-template <typename F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const VerityError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 TEST(ImageComparison, IdenticalDistributionsAgree) {
   const ComparisonResult r = compareImages(exponentialImage(64, 48, 32, 1.0, 1, "a.exr"),

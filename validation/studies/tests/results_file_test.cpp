@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "testing/error_of.h"
 #include "validation/studies/json_lines.h"
 #include "validation/studies/study_records.h"
 
@@ -27,17 +28,6 @@ fs::path writeFile(const std::string& name, const std::string& text) {
 std::string readAll(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-// The message of the VerityError that `f` throws, or "" when it throws none.
-template <typename F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const VerityError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 const char* kRecord = R"({"study": "convergence", "run": 0})";
