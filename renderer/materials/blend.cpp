@@ -44,10 +44,30 @@ std::optional<BsdfSample> Blend::sample(const TextureQuery& q, const Vector3f& w
   return makeSample(s->wo, eval(q, wi, s->wo, mode), pdf(q, wi, s->wo), s->lobe, s->eta);
 }
 
+namespace {
+KeyList blendKeys() {
+  return {{"a",
+           {},
+           ValueType::Material,
+           "a non-emitting material defined earlier in the file",
+           "required",
+           "the material weighted by 1 - amount: the name of a material listed earlier in "
+           "\"materials\", or an inline material object"},
+          {"b", {}, ValueType::Material, "as for a", "required", "the material weighted by amount"},
+          {"amount",
+           {},
+           ValueType::Texture,
+           "[0, 1]; a texture is clamped to it",
+           "0.5",
+           "the weight of b (the mean of the channels)"}};
+}
+}  // namespace
+
 MaterialType blendType() {
   return {"blend",
           {},
-          "(1 - amount)·a + amount·b; a, b (materials or names), amount (0.5)",
+          "(1 - amount)·a + amount·b",
+          blendKeys(),
           [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
             auto a = f.reference(node[{"a"}]);
             auto b = f.reference(node[{"b"}]);

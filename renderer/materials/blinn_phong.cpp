@@ -2,6 +2,8 @@
 
 #include "materials/fresnel.h"
 #include "materials/material_factory.h"
+#include "materials/material_keys.h"
+#include "materials/material_params.h"
 #include "materials/sample_util.h"
 #include "sampling/warp.h"
 
@@ -38,10 +40,17 @@ std::optional<BsdfSample> BlinnPhong::sample(const TextureQuery& q, const Vector
 MaterialType blinnPhongType() {
   return {"blinnphong",
           {"blinn_phong", "blinn-phong"},
-          "normalised Blinn-Phong lobe; albedo (0.8), exponent (10)",
+          "normalised Blinn-Phong lobe",
+          {albedoKey("the reflected fraction of light, at most"),
+           {"exponent",
+            {},
+            ValueType::Number,
+            kExponentRange.interval(),
+            "10",
+            "the lobe's sharpness: cos^exponent of the half vector's angle to the normal"}},
           [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
             TexturedColor albedo = f.parseAlbedo(node);
-            const float exponent = node.getFloat({"exponent"}, 10.0f, Range{0.0f, 1e6f});
+            const float exponent = node.getFloat({"exponent"}, 10.0f, kExponentRange);
             return std::make_shared<BlinnPhong>(std::move(albedo), exponent);
           }};
 }

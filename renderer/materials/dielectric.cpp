@@ -35,7 +35,13 @@ std::optional<BsdfSample> sampleSmoothDielectric(const Vector3f& wi, float eta, 
 MaterialType dielectricType() {
   return {"dielectric",
           {},
-          "smooth glass, a delta reflection and refraction; ior (1.5)",
+          "smooth glass, a delta reflection and refraction",
+          {{"ior",
+            {},
+            ValueType::Number,
+            kIorRange.interval(),
+            "1.5",
+            "index of refraction inside (behind the normal) over outside"}},
           [](MaterialFactory&, const JsonNode& node) -> std::shared_ptr<const Material> {
             return std::make_shared<Dielectric>(node.getFloat({"ior"}, 1.5f, kIorRange));
           }};

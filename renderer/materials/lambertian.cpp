@@ -1,6 +1,7 @@
 #include "materials/lambertian.h"
 
 #include "materials/material_factory.h"
+#include "materials/material_keys.h"
 #include "sampling/warp.h"
 
 namespace verity {
@@ -31,7 +32,8 @@ std::optional<BsdfSample> Lambertian::sample(const TextureQuery& q, const Vector
 MaterialType lambertianType() {
   return {"lambertian",
           {},
-          "ideal diffuse reflection; albedo (0.8)",
+          "ideal diffuse reflection",
+          {albedoKey("the fraction of light reflected")},
           [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
             return std::make_shared<Lambertian>(f.parseAlbedo(node));
           }};

@@ -24,6 +24,7 @@ std::shared_ptr<const Material> MaterialFactory::make(const JsonNode& node) {
   if (!entry)
     node[{"type"}].fail(
         fmt::format("unknown material type \"{}\" (known types: {})", type, materialTypeList()));
+  node.declare({"material " + entry->name, {&materialCommonKeys(), &entry->keys}});
   std::shared_ptr<const Material> material = entry->build(*this, node);
   node.rejectUnknownKeys();
   return material;

@@ -19,6 +19,8 @@ inline constexpr Range kAlphaRange{MicrofacetDistribution::kMinAlpha, 4.0f};
 inline constexpr Range kIorRange{0.0f, 100.0f, true, false};
 // Imaginary part κ of a conductor's index: non-negative, at most 100 (metals' κ below 10).
 inline constexpr Range kExtinctionRange{0.0f, 100.0f};
+// Phong and Blinn-Phong exponents: 0 is a cosine lobe, 1e6 a lobe far narrower than a pixel.
+inline constexpr Range kExponentRange{0.0f, 1e6f};
 
 // "sampling": "visible" (the default) or "normals", how microfacet normals are sampled.
 MicrofacetSampling parseSampling(const JsonNode& node);

@@ -27,6 +27,23 @@ const std::vector<MaterialType>& materialTypes() {
   return types;
 }
 
+const KeyList& materialCommonKeys() {
+  static const KeyList keys = {
+      {"type",
+       {},
+       ValueType::String,
+       "a type's name or other spelling (any letter case)",
+       "required",
+       "the material type"},
+      {"name",
+       {},
+       ValueType::String,
+       "unique in the file",
+       "required in \"materials\", else none",
+       "the name by which surfaces, and blends listed after it, refer to this material"}};
+  return keys;
+}
+
 const MaterialType* findMaterialType(const std::string& spelling) {
   for (const MaterialType& t : materialTypes()) {
     if (t.name == spelling) return &t;
@@ -51,7 +68,10 @@ std::string materialTypeHelp() {
       for (size_t i = 0; i < t.aliases.size(); ++i) names += (i ? ", " : "") + t.aliases[i];
       names += ")";
     }
-    help += "  " + names + ": " + t.description + "\n";
+    std::string keys;
+    for (const KeyDeclaration& k : t.keys)
+      keys += (keys.empty() ? "; " : ", ") + k.name + " (" + k.defaultValue + ")";
+    help += "  " + names + ": " + t.description + keys + "\n";
   }
   return help;
 }

@@ -1,12 +1,15 @@
 // One entry of the material registry (material_registry.h): a type's canonical name in the
-// scene format, its other spellings, a one-line description for help and errors, and the
-// function that builds the material from its JSON object. Each material's own file defines
-// its entry (lambertianType() in lambertian.cpp, ...), next to the class it builds.
+// scene format, its other spellings, a one-line description for help and errors, the keys
+// its JSON object takes, and the function that builds the material from that object. Each
+// material's own file defines its entry (lambertianType() in lambertian.cpp, ...), next to the
+// class it builds.
 #pragma once
 
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "scene/key_declaration.h"
 
 namespace verity {
 
@@ -20,7 +23,8 @@ struct MaterialType {
   using Build = std::shared_ptr<const Material> (*)(MaterialFactory& factory, const JsonNode& node);
   std::string name;                  // lower case, as JsonNode::type() returns it
   std::vector<std::string> aliases;  // other spellings of the same type
-  std::string description;           // one line: what it is and its keys
+  std::string description;           // one line: what it is
+  KeyList keys;                      // besides "type" and "name" (materialCommonKeys())
   Build build;
 };
 

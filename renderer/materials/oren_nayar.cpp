@@ -2,6 +2,7 @@
 
 #include "core/frame.h"
 #include "materials/material_factory.h"
+#include "materials/material_keys.h"
 #include "materials/sample_util.h"
 #include "sampling/warp.h"
 
@@ -46,15 +47,21 @@ std::optional<BsdfSample> OrenNayar::sample(const TextureQuery& q, const Vector3
 constexpr Range kSigmaRange{0.0f, kPi / 2};
 
 MaterialType orenNayarType() {
-  return {
-      "oren-nayar",
-      {"oren_nayar"},
-      "rough diffuse reflection; albedo (0.8), sigma (0.35, slope deviation in radians, 0 to π/2)",
-      [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
-        TexturedColor albedo = f.parseAlbedo(node);
-        const float sigma = node.getFloat({"sigma"}, 0.35f, kSigmaRange);
-        return std::make_shared<OrenNayar>(std::move(albedo), sigma);
-      }};
+  return {"oren-nayar",
+          {"oren_nayar"},
+          "rough diffuse reflection",
+          {albedoKey("the reflectance of the facets"),
+           {"sigma",
+            {},
+            ValueType::Number,
+            kSigmaRange.interval(),
+            "0.35",
+            "standard deviation of the facets' slope angle, in radians"}},
+          [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
+            TexturedColor albedo = f.parseAlbedo(node);
+            const float sigma = node.getFloat({"sigma"}, 0.35f, kSigmaRange);
+            return std::make_shared<OrenNayar>(std::move(albedo), sigma);
+          }};
 }
 
 }  // namespace verity

@@ -2,6 +2,8 @@
 
 #include "core/frame.h"
 #include "materials/material_factory.h"
+#include "materials/material_keys.h"
+#include "materials/material_params.h"
 #include "materials/sample_util.h"
 #include "sampling/warp.h"
 
@@ -42,10 +44,17 @@ std::optional<BsdfSample> Phong::sample(const TextureQuery& q, const Vector3f& w
 MaterialType phongType() {
   return {"phong",
           {},
-          "normalised modified Phong lobe; albedo (0.8), exponent (10)",
+          "normalised modified Phong lobe",
+          {albedoKey("the reflected fraction of light, at most"),
+           {"exponent",
+            {},
+            ValueType::Number,
+            kExponentRange.interval(),
+            "10",
+            "the lobe's sharpness: cos^exponent about the mirror direction"}},
           [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
             TexturedColor albedo = f.parseAlbedo(node);
-            const float exponent = node.getFloat({"exponent"}, 10.0f, Range{0.0f, 1e6f});
+            const float exponent = node.getFloat({"exponent"}, 10.0f, kExponentRange);
             return std::make_shared<Phong>(std::move(albedo), exponent);
           }};
 }

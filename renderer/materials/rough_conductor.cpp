@@ -4,6 +4,7 @@
 
 #include "materials/fresnel.h"
 #include "materials/material_factory.h"
+#include "materials/material_keys.h"
 #include "materials/material_params.h"
 #include "materials/mirror.h"
 #include "materials/named_conductors.h"
@@ -103,11 +104,29 @@ std::shared_ptr<const Material> buildComplexConductor(MicrofacetType type, Mater
   return std::make_shared<RoughConductor>(std::move(p));
 }
 
-std::string complexKeys() {
-  return "albedo (0.8, a tint), ab or alpha (0.5, 1e-4 to 4), ior and ext (0.05 and 3.9, each a "
-         "number "
-         "or [r, g, b]) or conductor (one of " +
-         namedConductorList() + "), sampling (visible)";
+// The keys of "beckmann" and "ggx".
+KeyList complexConductorKeys() {
+  return {albedoKey("a tint on the Fresnel reflectance: 1 for the metal as measured"),
+          alphaKey("ab", "alpha", "0.5"),
+          {"ior",
+           {},
+           ValueType::Rgb,
+           kIorRange.interval() + " per channel",
+           "0.05",
+           "η, the real part of the complex index of refraction; not with \"conductor\""},
+          {"ext",
+           {},
+           ValueType::Rgb,
+           kExtinctionRange.interval() + " per channel",
+           "3.9",
+           "κ, the imaginary part (extinction) of the complex index; not with \"conductor\""},
+          {"conductor",
+           {},
+           ValueType::String,
+           namedConductorList(),
+           "none (ior and ext)",
+           "a measured metal's index at 650, 550 and 450 nm, instead of \"ior\" and \"ext\""},
+          samplingKey()};
 }
 
 }  // namespace
@@ -115,7 +134,8 @@ std::string complexKeys() {
 MaterialType beckmannType() {
   return {"beckmann",
           {},
-          "rough conductor, Beckmann distribution; " + complexKeys(),
+          "rough conductor, Beckmann distribution, complex Fresnel term",
+          complexConductorKeys(),
           [](MaterialFactory& f, const JsonNode& node) {
             return buildComplexConductor(MicrofacetType::Beckmann, f, node);
           }};
@@ -124,7 +144,8 @@ MaterialType beckmannType() {
 MaterialType ggxType() {
   return {"ggx",
           {},
-          "rough conductor, GGX distribution; " + complexKeys(),
+          "rough conductor, GGX distribution, complex Fresnel term",
+          complexConductorKeys(),
           [](MaterialFactory& f, const JsonNode& node) {
             return buildComplexConductor(MicrofacetType::GGX, f, node);
           }};
@@ -134,7 +155,15 @@ MaterialType metalType() {
   return {"metal",
           {},
           "DIRT's metal: a mirror at roughness 0, else GGX with alpha = roughness² and Schlick's "
-          "Fresnel with F0 = albedo; albedo (0.8), roughness (0, or 0.01 to 2), sampling (visible)",
+          "Fresnel with F0 = albedo",
+          {albedoKey("the reflectance at normal incidence (Schlick's F0)"),
+           {"roughness",
+            {},
+            ValueType::Texture,
+            "0 (a mirror) or [0.01, 2]; a texture at most 2",
+            "0",
+            "√α: the GGX roughness is its square (the mean of the channels)"},
+           samplingKey()},
           [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
             TexturedColor albedo = f.parseAlbedo(node);
             // A texture-valued roughness must not be negative where it is a constant (a

@@ -3,6 +3,7 @@
 #include "materials/dielectric.h"
 #include "materials/fresnel.h"
 #include "materials/material_factory.h"
+#include "materials/material_keys.h"
 #include "materials/material_params.h"
 #include "materials/sample_util.h"
 
@@ -118,9 +119,16 @@ std::optional<BsdfSample> RoughDielectric::sample(const TextureQuery& q, const V
 MaterialType roughDielectricType() {
   return {"rough_dielectric",
           {"rough dielectric", "roughdielectric"},
-          "rough glass (Walter et al. 2007); distribution (ggx), alpha (0.1, 1e-4 to 4), ior (1.5, "
-          "up to 100), "
-          "sampling (visible)",
+          "rough glass (Walter et al. 2007)",
+          {distributionKey(),
+           alphaKey("alpha", "ab", "0.1"),
+           {"ior",
+            {},
+            ValueType::Number,
+            kIorRange.interval(),
+            "1.5",
+            "index of refraction inside (behind the normal) over outside"},
+           samplingKey()},
           [](MaterialFactory&, const JsonNode& node) -> std::shared_ptr<const Material> {
             const MicrofacetType distribution = parseDistribution(node);
             const float alpha = node.getFloat({"alpha", "ab"}, 0.1f, kAlphaRange);

@@ -131,9 +131,15 @@ bool Range::contains(float v) const {
 
 std::string Range::describe() const {
   if (lo == -kInfinity && hi == kInfinity) return "a finite number";
-  if (hi == kInfinity) return fmt::format("a number {} {}", loOpen ? ">" : ">=", lo);
-  if (lo == -kInfinity) return fmt::format("a number {} {}", hiOpen ? "<" : "<=", hi);
-  return fmt::format("a number in {}{}, {}{}", loOpen ? "(" : "[", lo, hi, hiOpen ? ")" : "]");
+  if (hi == kInfinity || lo == -kInfinity) return "a number " + interval();
+  return "a number in " + interval();
+}
+
+std::string Range::interval() const {
+  if (lo == -kInfinity && hi == kInfinity) return "finite";
+  if (hi == kInfinity) return fmt::format("{} {}", loOpen ? ">" : ">=", lo);
+  if (lo == -kInfinity) return fmt::format("{} {}", hiOpen ? "<" : "<=", hi);
+  return fmt::format("{}{}, {}{}", loOpen ? "(" : "[", lo, hi, hiOpen ? ")" : "]");
 }
 
 JsonNode::JsonNode(std::shared_ptr<const nlohmann::json> root, const nlohmann::json* value,
@@ -197,8 +203,34 @@ std::filesystem::path JsonNode::resolve(const std::string& name) const {
   return source_->file.parent_path() / p;
 }
 
+void JsonNode::checkDeclared(Keys keys) const {
+  const auto it = source_->declared.find(value_);
+  if (it == source_->declared.end()) return;
+  const KeyDeclaration* key = it->second.find(*keys.begin());
+  bool same = key && keys.size() == 1 + key->aliases.size();
+  for (const char* spelling : keys) same = same && it->second.find(spelling) == key;
+  if (!same)
+    throw std::logic_error(fmt::format(
+        "{}: {}: the reader of {} asks for \"{}\" ({} spellings), which its key declaration "
+        "does not list as one key with exactly these spellings",
+        source_->file.string(), path_.empty() ? "(top level)" : path_, it->second.what,
+        *keys.begin(), keys.size()));
+}
+
+void JsonNode::declare(DeclaredKeys keys) const {
+  if (!value_->is_object()) return;
+  DeclaredKeys& declared = source_->declared[value_] = std::move(keys);
+  for (const std::string& read : source_->used[value_])
+    if (!declared.find(read))
+      throw std::logic_error(
+          fmt::format("{}: {}: \"{}\" was read before {} declared its keys, "
+                      "and is not among them",
+                      source_->file.string(), path_, read, declared.what));
+}
+
 const char* JsonNode::resolveKey(Keys keys) const {
   if (!value_->is_object()) fail("expected an object, found " + typeName(*value_));
+  checkDeclared(keys);
   const char* found = nullptr;
   for (const char* key : keys) {
     if (value_->contains(key)) {
@@ -315,10 +347,16 @@ std::string JsonNode::type() const {
 void JsonNode::rejectUnknownKeys() const {
   if (!value_->is_object()) return;
   const auto& used = source_->used[value_];
+  const auto declared = source_->declared.find(value_);
+  const std::string owner = declared == source_->declared.end()
+                                ? "the scene format's keys are"
+                                : "the keys of " + declared->second.what + " are";
   for (const auto& item : value_->items()) {
     if (!used.count(item.key())) {
       const std::string where = path_.empty() ? item.key() : path_ + "." + item.key();
-      throw VerityError(source_->file.string(), where, "unknown key");
+      throw VerityError(
+          source_->file.string(), where,
+          fmt::format("unknown key \"{}\" ({} listed in docs/scene-format.md)", item.key(), owner));
     }
   }
 }

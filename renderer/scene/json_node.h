@@ -1,6 +1,7 @@
 // A view of one JSON value that knows its file and JSON path, so that every error it
 // raises names both, and that remembers which keys were read so that unknown keys are
-// rejected instead of silently ignored.
+// rejected instead of silently ignored. An object whose type declares its keys
+// (key_declaration.h) can be read only by the spellings declared.
 #pragma once
 
 #include <filesystem>
@@ -14,6 +15,7 @@
 
 #include "core/error.h"
 #include "core/math.h"
+#include "scene/key_declaration.h"
 
 namespace verity {
 
@@ -29,7 +31,8 @@ struct Range {
   static Range nonNegative() { return {0.0f, kInfinity, false, false}; }
   static Range unit() { return {0.0f, 1.0f, false, false}; }
   bool contains(float v) const;
-  std::string describe() const;
+  std::string describe() const;  // "a number in (0, 100]"
+  std::string interval() const;  // "(0, 100]", "> 0", "finite": for key declarations
 };
 
 class JsonNode {
@@ -77,7 +80,11 @@ class JsonNode {
 
   // The object's "type", lower-cased, with spaces, hyphens and underscores kept as given.
   std::string type() const;
-  // Raises an error for every member that no read asked for.
+  // States the keys this object's type declares. Every key read before or after must be
+  // declared, by exactly its declared spellings: a read that is not is a defect of the
+  // reader, thrown as std::logic_error. `keys` must outlive the document.
+  void declare(DeclaredKeys keys) const;
+  // Raises an error for the first member that no read asked for.
   void rejectUnknownKeys() const;
   [[noreturn]] void fail(const std::string& problem) const;
 
@@ -86,7 +93,10 @@ class JsonNode {
     std::filesystem::path file;
     // Keys read so far, per JSON object, shared by every view of the document.
     mutable std::map<const nlohmann::json*, std::set<std::string>> used;
+    // The declared keys of the objects whose type declares them.
+    mutable std::map<const nlohmann::json*, DeclaredKeys> declared;
   };
+  void checkDeclared(Keys keys) const;
   JsonNode(std::shared_ptr<const nlohmann::json> root, const nlohmann::json* value,
            std::string path, std::shared_ptr<const Source> source);
   const char* resolveKey(Keys keys) const;
