@@ -18,4 +18,14 @@ Point2f IndependentSampler::next2D() {
   return {x, next1D()};
 }
 
+SamplerType independentSamplerType() {
+  return {"independent",
+          {},
+          "a fresh uniform random number for every sample and dimension (the default)",
+          {},  // no keys of its own
+          [](const JsonNode*) -> std::unique_ptr<Sampler> {
+            return std::make_unique<IndependentSampler>();
+          }};
+}
+
 }  // namespace verity

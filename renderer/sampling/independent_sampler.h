@@ -4,6 +4,7 @@
 #include <pcg_random.hpp>
 
 #include "sampling/sampler.h"
+#include "sampling/sampler_type.h"
 
 namespace verity {
 
@@ -19,6 +20,9 @@ class IndependentSampler : public Sampler {
  private:
   pcg32 rng_;
 };
+
+// "independent" in the scene format (sampler_registry.h), the default.
+SamplerType independentSamplerType();
 
 // Uniform float in [0, 1) from 32 random bits.
 inline float uniformFloat(uint32_t bits) {
