@@ -2,7 +2,8 @@
 # registers a GoogleTest executable's tests (those FILTER selects) with CTest and gives every
 # discovered test all the labels. NAME tells apart several registrations of one target.
 # Labels are set after discovery because CMake 3.25's gtest discovery flattens list values
-# passed through PROPERTIES (`LABELS "quick;renderer"` would keep only "quick").
+# passed through PROPERTIES (`LABELS "quick;renderer"` would keep only "quick"). A target with
+# label quick joins the `quick_tests` target (see verity_add_quick_tests_target).
 function(verity_discover_tests target)
   cmake_parse_arguments(ARG "" "NAME;PREFIX;FILTER" "LABELS" ${ARGN})
   if(NOT ARG_NAME)
@@ -18,6 +19,23 @@ function(verity_discover_tests target)
   gtest_discover_tests(${target} ${options} DISCOVERY_TIMEOUT 120 TEST_LIST ${ARG_NAME}_TESTS)
   list(JOIN ARG_LABELS ";" labels)
   set(file ${CMAKE_CURRENT_BINARY_DIR}/${ARG_NAME}_labels.cmake)
-  file(WRITE ${file} "set_tests_properties(\${${ARG_NAME}_TESTS} PROPERTIES LABELS \"${labels}\")\n")
+  # A target left unbuilt (a build of quick_tests alone) has no test list.
+  file(WRITE ${file} "if(${ARG_NAME}_TESTS)\n"
+                     "  set_tests_properties(\${${ARG_NAME}_TESTS} PROPERTIES LABELS \"${labels}\")\n"
+                     "endif()\n")
   set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${file})
+  if("quick" IN_LIST ARG_LABELS)
+    set_property(GLOBAL APPEND PROPERTY VERITY_QUICK_TEST_TARGETS ${target})
+  endif()
+endfunction()
+
+# verity_add_quick_tests_target(TARGET...): `quick_tests` builds what `ctest -L quick` runs:
+# the executables registered with label quick, and the TARGETs the other quick tests need
+# (the package tests install the program and the packaged libraries). The sanitizer job
+# builds it alone.
+function(verity_add_quick_tests_target)
+  get_property(targets GLOBAL PROPERTY VERITY_QUICK_TEST_TARGETS)
+  list(REMOVE_DUPLICATES targets)
+  add_custom_target(quick_tests)
+  add_dependencies(quick_tests ${targets} ${ARGN})
 endfunction()
