@@ -3,6 +3,7 @@
 
 #include "textures/solid_mapping.h"
 #include "textures/texture.h"
+#include "textures/texture_type.h"
 
 namespace verity {
 
@@ -18,5 +19,8 @@ class CheckerTexture : public Texture {
   float scale_;
   SolidMapping mapping_;
 };
+
+// The scene format's "checker".
+TextureType checkerTextureType();
 
 }  // namespace verity

@@ -1,8 +1,15 @@
 #include "textures/image_texture.h"
 
+#include <ImfTestFile.h>
+#include <fmt/format.h>
 #include <stb_image.h>
 
+#include <cmath>
+
 #include "core/error.h"
+#include "film/image_io.h"
+#include "scene/json_node.h"
+#include "textures/texture_factory.h"
 
 namespace verity {
 
@@ -14,12 +21,52 @@ float linearToSrgb(float v) {
   return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
 }
 
+namespace {
+// The R, G and B planes of an OpenEXR file, interleaved. Its values must be finite and not
+// negative, as a constant colour's must.
+std::vector<float> readExrRgb(const std::filesystem::path& file, const std::string& jsonPath,
+                              int* width, int* height) {
+  const std::string name = file.string();
+  ImageChannels image;
+  try {
+    image = readExr(file);
+  } catch (const VerityError& e) {
+    throw VerityError("", jsonPath, "\"" + name + "\": " + e.problem());
+  }
+  const char* names[3] = {"R", "G", "B"};
+  for (const char* c : names)
+    if (!image.planes.count(c))
+      throw VerityError("", jsonPath,
+                        "the OpenEXR image \"" + name + "\" has no " + c +
+                            " channel (a texture needs R, G and B)");
+  *width = image.width;
+  *height = image.height;
+  std::vector<float> rgb(size_t(image.width) * image.height * 3);
+  for (int c = 0; c < 3; ++c) {
+    const std::vector<float>& plane = image.planes.at(names[c]);
+    for (size_t i = 0; i < plane.size(); ++i) {
+      if (!(plane[i] >= 0) || !std::isfinite(plane[i]))
+        throw VerityError("", jsonPath,
+                          fmt::format("the OpenEXR image \"{}\" holds {} in {} at pixel ({}, {}): "
+                                      "a texture's values must be finite and not negative",
+                                      name, plane[i], names[c], i % image.width, i / image.width));
+      rgb[3 * i + c] = plane[i];
+    }
+  }
+  return rgb;
+}
+}  // namespace
+
 ImageTexture::ImageTexture(const std::filesystem::path& file, const std::string& jsonPath) {
   int channels = 0;
   const std::string name = file.string();
+  if (std::filesystem::is_directory(file))
+    throw VerityError("", jsonPath, "\"" + name + "\" is a directory, not an image file");
   if (!std::filesystem::is_regular_file(file))
     throw VerityError("", jsonPath, "image file \"" + name + "\" does not exist");
-  if (stbi_is_hdr(name.c_str())) {
+  if (Imf::isOpenExrFile(name.c_str())) {
+    rgb_ = readExrRgb(file, jsonPath, &width_, &height_);
+  } else if (stbi_is_hdr(name.c_str())) {
     float* data = stbi_loadf(name.c_str(), &width_, &height_, &channels, 3);
     if (!data)
       throw VerityError("", jsonPath,
@@ -64,6 +111,21 @@ Color3 ImageTexture::eval(const TextureQuery& q) const {
   const float fx = x - x0, fy = y - y0;
   return (1 - fx) * (1 - fy) * texel(x0, y0) + fx * (1 - fy) * texel(x0 + 1, y0) +
          (1 - fx) * fy * texel(x0, y0 + 1) + fx * fy * texel(x0 + 1, y0 + 1);
+}
+
+TextureType imageTextureType() {
+  return {"image",
+          "a bitmap looked up by the surface's uv, bilinearly filtered and repeated",
+          {{"filename",
+            {},
+            ValueType::String,
+            "a PNG, JPEG, BMP, TGA, Radiance .hdr or OpenEXR file, relative to the scene file",
+            "required",
+            "the image: 8-bit files are sRGB, .hdr and OpenEXR linear; (u, v) = (0, 0) is its "
+            "bottom-left corner"}},
+          [](const JsonNode& node, TextureFactory& factory, const std::string&) {
+            return TexturedColor(factory.image(node[{"filename"}]));
+          }};
 }
 
 }  // namespace verity

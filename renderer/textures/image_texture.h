@@ -1,11 +1,12 @@
 // A bitmap looked up by uv with bilinear filtering and wrapping. 8-bit files are sRGB and
-// converted to linear; Radiance .hdr files are linear already.
+// converted to linear; Radiance .hdr and OpenEXR files are linear already.
 #pragma once
 
 #include <filesystem>
 #include <vector>
 
 #include "textures/texture.h"
+#include "textures/texture_type.h"
 
 namespace verity {
 
@@ -26,6 +27,9 @@ class ImageTexture : public Texture {
   std::vector<float> rgb_;
   float upperBound_ = 0;  // the largest texel value
 };
+
+// The scene format's "image".
+TextureType imageTextureType();
 
 // The exact sRGB transfer curve (IEC 61966-2-1).
 float srgbToLinear(float v);

@@ -4,6 +4,7 @@
 
 #include "textures/solid_mapping.h"
 #include "textures/texture.h"
+#include "textures/texture_type.h"
 
 namespace verity {
 
@@ -19,5 +20,8 @@ class MarbleTexture : public Texture {
   float scale_;
   SolidMapping mapping_;
 };
+
+// The scene format's "marble".
+TextureType marbleTextureType();
 
 }  // namespace verity

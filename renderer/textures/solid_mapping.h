@@ -6,8 +6,11 @@
 #include <optional>
 
 #include "core/transform.h"
+#include "scene/key_declaration.h"
 
 namespace verity {
+
+class JsonNode;
 
 class SolidMapping {
  public:
@@ -21,5 +24,10 @@ class SolidMapping {
  private:
   std::optional<Transform> toTexture_;
 };
+
+// A solid texture's optional "transform", read from its object `node`.
+SolidMapping parseSolidMapping(const JsonNode& node);
+// The declaration of that key, for the solid textures' registry entries.
+KeyDeclaration solidTransformKey();
 
 }  // namespace verity

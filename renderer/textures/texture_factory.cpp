@@ -1,66 +1,45 @@
 #include "textures/texture_factory.h"
 
-#include "scene/scene.h"
-#include "scene/transform_parser.h"
-#include "textures/checker.h"
 #include "textures/image_texture.h"
-#include "textures/marble.h"
+#include "textures/texture_registry.h"
 
 namespace verity {
 
-namespace {
-// A solid texture's optional `transform`: its frame in the world.
-SolidMapping parseMapping(const JsonNode& node) {
-  return node.has({"transform"}) ? SolidMapping(parseOptionalTransform(node)) : SolidMapping();
-}
-}  // namespace
-
-TexturedColor TextureFactory::parse(const JsonNode& node) {
+TexturedColor TextureFactory::parse(const JsonNode& node, const std::string& quantity) {
   if (node.isNumber() || node.isArray()) {
     const Vector3f v = node.asVector3();
-    if ((v.array() < 0).any()) node.fail("a colour must not be negative");
+    if ((v.array() < 0).any()) node.fail(quantity + " must not be negative");
     return TexturedColor(Color3(v.array()));
   }
   if (!node.isObject()) node.fail("expected a number, [r,g,b] or a texture object");
   const std::string type = node.type();
-  TexturedColor result;
-  if (type == "constant") {
-    result = parse(node[{"color", "value"}]);
-  } else if (type == "checker") {
-    TexturedColor even = parse(node, {"even"}, Color3::Ones());
-    TexturedColor odd = parse(node, {"odd"}, Color3::Zero());
-    const float scale = node.getFloat({"scale"}, 1.0f, Range::positive());
-    result = TexturedColor(std::make_shared<CheckerTexture>(even, odd, scale, parseMapping(node)));
-  } else if (type == "marble") {
-    TexturedColor veins = parse(node, {"veins"}, Color3::Constant(0.1f));
-    TexturedColor base = parse(node, {"base"}, Color3::Constant(0.9f));
-    // Beyond this scale a point at the largest coordinate a scene may hold overflows to
-    // infinity, and the veins' sine of it is NaN.
-    constexpr float kMaxScale = std::numeric_limits<float>::max() / kMaxSceneCoordinate;
-    const float scale = node.getFloat({"scale"}, 1.0f, Range{0.0f, kMaxScale, true, false});
-    result = TexturedColor(std::make_shared<MarbleTexture>(veins, base, scale, parseMapping(node)));
-  } else if (type == "image") {
-    const JsonNode fileNode = node[{"filename"}];
-    const std::string path = node.resolve(fileNode.asString()).string();
-    auto& image = images_[path];
-    if (!image) {
-      try {
-        image = std::make_shared<ImageTexture>(path, fileNode.path());
-      } catch (const VerityError& e) {
-        throw VerityError(node.file().string(), e.jsonPath(), e.problem());
-      }
-    }
-    result = TexturedColor(image);
-  } else {
-    node[{"type"}].fail("unknown texture type \"" + type + "\"");
-  }
+  const TextureType* entry = findTextureType(type);
+  if (!entry)
+    node[{"type"}].fail("unknown texture type \"" + type + "\" (expected " + textureTypeList() +
+                        ")");
+  node.declare({"texture " + entry->name, {&textureCommonKeys(), &entry->keys}});
+  TexturedColor result = entry->build(node, *this, quantity);
   node.rejectUnknownKeys();
   return result;
 }
 
-TexturedColor TextureFactory::parse(const JsonNode& parent, Keys keys, const Color3& def) {
+TexturedColor TextureFactory::parse(const JsonNode& parent, Keys keys, const Color3& def,
+                                    const std::string& quantity) {
   auto node = parent.find(keys);
-  return node ? parse(*node) : TexturedColor(def);
+  return node ? parse(*node, quantity) : TexturedColor(def);
+}
+
+std::shared_ptr<const ImageTexture> TextureFactory::image(const JsonNode& fileNode) {
+  const std::string path = fileNode.resolve(fileNode.asString()).string();
+  auto& image = images_[path];
+  if (!image) {
+    try {
+      image = std::make_shared<ImageTexture>(path, fileNode.path());
+    } catch (const VerityError& e) {
+      throw VerityError(fileNode.file().string(), e.jsonPath(), e.problem());
+    }
+  }
+  return image;
 }
 
 }  // namespace verity
