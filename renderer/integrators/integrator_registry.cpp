@@ -1,5 +1,7 @@
 #include "integrators/integrator_registry.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 
 #include "integrators/ambient_occlusion.h"
@@ -16,7 +18,49 @@ namespace {
 template <PathTracer::Strategy strategy>
 std::unique_ptr<Integrator> makePathTracer(const IntegratorSettings& s) {
   return std::make_unique<PathTracer>(strategy, s.maxBounces,
-                                      strategy == PathTracer::Strategy::Mis ? s.misPower : 1);
+                                      strategy == PathTracer::Strategy::Mis ? s.misPower : 1,
+                                      RussianRoulette(s.rrDepth));
+}
+
+// The keys the integrators share. Their defaults are IntegratorSettings' own.
+KeyDeclaration maxBouncesKey() {
+  return {"max_bounces",
+          {"max bounces"},
+          ValueType::Integer,
+          fmt::format("[0, {}]", kMaxBouncesLimit),
+          std::to_string(IntegratorSettings().maxBounces),
+          "the most scattering events on a path: 0 shows only emitters seen directly, 1 adds "
+          "direct lighting"};
+}
+
+KeyDeclaration rrDepthKey() {
+  return {"rr_depth",
+          {},
+          ValueType::Integer,
+          ">= 1",
+          std::to_string(IntegratorSettings().rrDepth),
+          "the scattering event after which Russian roulette first decides whether a path "
+          "goes on (1: after the first); one more than max_bounces turns the roulette off"};
+}
+
+KeyDeclaration misPowerKey(const std::string& what) {
+  return {"power",
+          {},
+          ValueType::Number,
+          "(0, 16]",
+          "1",
+          "the exponent of the power heuristic that weights " + what +
+              ": 1 is the balance heuristic, 2 Veach's usual power heuristic"};
+}
+
+KeyDeclaration aoDistanceKey() {
+  return {"distance",
+          {},
+          ValueType::Number,
+          "> 0",
+          "infinite",
+          "the occlusion radius: a point is occluded in a direction when a surface lies closer "
+          "than this"};
 }
 
 // One explicit table rather than self-registering objects: the renderer is a static library,
@@ -31,7 +75,7 @@ std::vector<IntegratorType> makeTable() {
   t.push_back({.name = "ao",
                .aliases = {"ambient_occlusion"},
                .description = "ambient occlusion within \"distance\"",
-               .readsAoDistance = true,
+               .keys = {aoDistanceKey()},
                .make = [](const IntegratorSettings& s) -> std::unique_ptr<Integrator> {
                  return std::make_unique<AmbientOcclusion>(s.aoDistance);
                }});
@@ -40,7 +84,7 @@ std::vector<IntegratorType> makeTable() {
                .strategies = "emission found by material sampling alone: rays that hit an "
                              "emitter or escape to the background; no shadow rays",
                .estimatesRadiance = true,
-               .readsMaxBounces = true,
+               .keys = {maxBouncesKey(), rrDepthKey()},
                .make = makePathTracer<PathTracer::Strategy::Materials>});
   t.push_back({.name = "path_tracer_nee",
                .description = "path tracing with next-event estimation",
@@ -49,7 +93,7 @@ std::vector<IntegratorType> makeTable() {
                              "emission hit by material sampling only when seen directly or "
                              "after a delta bounce",
                .estimatesRadiance = true,
-               .readsMaxBounces = true,
+               .keys = {maxBouncesKey(), rrDepthKey()},
                .make = makePathTracer<PathTracer::Strategy::NextEvent>});
   t.push_back({.name = "path_tracer_mis",
                .description = "path tracing, material and light samples combined by MIS",
@@ -57,8 +101,7 @@ std::vector<IntegratorType> makeTable() {
                              "surfaces, combined by multiple importance sampling (balance "
                              "heuristic, or power heuristic with \"power\")",
                .estimatesRadiance = true,
-               .readsMaxBounces = true,
-               .readsMisPower = true,
+               .keys = {maxBouncesKey(), rrDepthKey(), misPowerKey("material and light samples")},
                .make = makePathTracer<PathTracer::Strategy::Mis>});
   t.push_back({.name = "bdpt",
                .description = "bidirectional path tracing, MIS over every strategy (s, t)",
@@ -67,11 +110,11 @@ std::vector<IntegratorType> makeTable() {
                              "sampling; light subpaths connected to the lens (t = 1) are "
                              "splatted",
                .estimatesRadiance = true,
-               .readsMaxBounces = true,
-               .readsMisPower = true,
+               .keys = {maxBouncesKey(), rrDepthKey(), misPowerKey("the strategies (s, t)")},
                .hasStrategies = true,
                .make = [](const IntegratorSettings& s) -> std::unique_ptr<Integrator> {
-                 return std::make_unique<Bdpt>(s.maxBounces, s.misPower, s.bdptDroppedStrategy);
+                 return std::make_unique<Bdpt>(s.maxBounces, s.misPower, RussianRoulette(s.rrDepth),
+                                               s.bdptDroppedStrategy);
                }});
   t.push_back({.name = "light_tracer",
                .description = "light tracing: light subpaths splatted through the lens",
@@ -80,11 +123,12 @@ std::vector<IntegratorType> makeTable() {
                              "seen directly; nothing the camera sees only in a mirror or through "
                              "smooth glass",
                .estimatesRadiance = true,
-               .readsMaxBounces = true,
+               .keys = {maxBouncesKey(), rrDepthKey()},
                .splatsOnly = true,
                .make = [](const IntegratorSettings& s) -> std::unique_ptr<Integrator> {
-                 return std::make_unique<LightTracer>(s.maxBounces);
+                 return std::make_unique<LightTracer>(s.maxBounces, RussianRoulette(s.rrDepth));
                }});
+  for (IntegratorType& type : t) type.readsMaxBounces = declaresKey(type, "max_bounces");
   return t;
 }
 
@@ -93,6 +137,22 @@ std::vector<IntegratorType> makeTable() {
 const std::vector<IntegratorType>& integratorTypes() {
   static const std::vector<IntegratorType> table = makeTable();
   return table;
+}
+
+const KeyList& integratorCommonKeys() {
+  static const KeyList keys = {{"type",
+                                {},
+                                ValueType::String,
+                                "a type's name or other spelling (any letter case; spaces read "
+                                "as _)",
+                                "\"" + IntegratorSettings().type + "\"",
+                                "the integrator type"}};
+  return keys;
+}
+
+bool declaresKey(const IntegratorType& type, const std::string& name) {
+  return std::any_of(type.keys.begin(), type.keys.end(),
+                     [&](const KeyDeclaration& k) { return k.name == name; });
 }
 
 const IntegratorType* findIntegratorType(const std::string& name) {

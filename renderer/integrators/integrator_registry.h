@@ -1,6 +1,7 @@
 // Every integrator type the renderer knows, in one table: its name and other spellings, what
-// it computes, which settings it reads, and how it is made. The scene loader, the commands'
-// help and errors, and the suites that must cover every estimator all read this table.
+// it computes, the keys it reads (docs/scene-format.md prints them), and how it is made. The
+// scene loader, the commands' help and errors, and the suites that must cover every estimator
+// all read this table.
 #pragma once
 
 #include <memory>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "integrators/integrator.h"
+#include "scene/key_declaration.h"
 
 namespace verity {
 
@@ -23,16 +25,22 @@ struct IntegratorType {
   // An estimator of radiance (not a debugging view): the agreement, invariance and
   // stability suites must cover it.
   bool estimatesRadiance = false;
-  bool readsMaxBounces = false;  // "max_bounces"; also: it can split its image by path length
-  bool readsMisPower = false;    // "power"
-  bool readsAoDistance = false;  // "distance"
-  bool hasStrategies = false;    // per-(s, t) strategy images (BDPT)
+  // The keys its "integrator" object takes besides integratorCommonKeys() ("type"); the
+  // settings reader reads exactly these (integrator_settings.cpp).
+  KeyList keys;
+  // Declares "max_bounces" (set from `keys`): it can split its image by path length.
+  bool readsMaxBounces = false;
+  bool hasStrategies = false;  // per-(s, t) strategy images (BDPT)
   // Sees only the pixels a light subpath reaches through the lens (t = 1 splats).
   bool splatsOnly = false;
   std::unique_ptr<Integrator> (*make)(const IntegratorSettings&) = nullptr;
 };
 
 const std::vector<IntegratorType>& integratorTypes();
+// The keys every integrator object takes: "type".
+const KeyList& integratorCommonKeys();
+// Whether `type` declares the key named `name` (its canonical spelling).
+bool declaresKey(const IntegratorType& type, const std::string& name);
 // The type `name` (any accepted spelling), or nullptr.
 const IntegratorType* findIntegratorType(const std::string& name);
 // The canonical names, for help and errors: "normals, ao, ... or light_tracer".

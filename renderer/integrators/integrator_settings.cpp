@@ -1,5 +1,7 @@
 #include "integrators/integrator_settings.h"
 
+#include <limits>
+
 #include "integrators/integrator_registry.h"
 
 namespace verity {
@@ -28,11 +30,15 @@ IntegratorSettings parseIntegratorSettings(const JsonNode* node) {
     (*node)[{"type"}].fail("unknown integrator type \"" + given + "\" (expected " +
                            integratorTypeList() + ")");
   s.type = type->name;
-  if (type->readsMaxBounces)
+  node->declare({"integrator " + type->name, {&integratorCommonKeys(), &type->keys}});
+  // Each key is read only by the types that declare it: another type's key is unknown.
+  if (declaresKey(*type, "max_bounces"))
     s.maxBounces = node->getInt({"max_bounces", "max bounces"}, s.maxBounces, 0, kMaxBouncesLimit);
-  if (type->readsMisPower)
+  if (declaresKey(*type, "rr_depth"))
+    s.rrDepth = node->getInt({"rr_depth"}, s.rrDepth, 1, std::numeric_limits<int>::max());
+  if (declaresKey(*type, "power"))
     s.misPower = node->getFloat({"power"}, s.misPower, Range{0, 16, true, false});
-  if (type->readsAoDistance)
+  if (declaresKey(*type, "distance"))
     s.aoDistance = node->getFloat({"distance"}, s.aoDistance, Range::positive());
   node->rejectUnknownKeys();
   return s;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "integrators/bdpt.h"
+#include "integrators/russian_roulette.h"
 #include "scene/json_node.h"
 
 namespace verity {
@@ -19,7 +20,10 @@ inline constexpr int kMaxBouncesLimit = 1 << 20;
 struct IntegratorSettings {
   std::string type = "path_tracer_mats";
   int maxBounces = 64;
-  float misPower = 1;            // 1: balance heuristic, 2: power heuristic
+  float misPower = 1;  // 1: balance heuristic, 2: power heuristic
+  // "rr_depth": the scattering event after which Russian roulette first decides whether a path
+  // goes on (1: after the first); one larger than max_bounces turns the roulette off.
+  int rrDepth = kDefaultRouletteDepth;
   float aoDistance = kInfinity;  // occlusion radius for "ao"
   // Test hook, never read from a scene: a BDPT strategy whose contribution is left out.
   BdptStrategy bdptDroppedStrategy;
