@@ -29,7 +29,8 @@ class Sampler {
   uint64_t seed_ = 0;
 };
 
-// Reads the scene's "sampler" object (types independent and stratified).
+// Reads the scene's "sampler" object: its "type" names an entry of the sampler registry
+// (sampler_registry.h), "independent" when absent; null `node` (no object) gives the default.
 std::unique_ptr<Sampler> makeSampler(const JsonNode* node);
 
 }  // namespace verity

@@ -1,17 +1,18 @@
-#include "sampling/independent_sampler.h"
-#include "sampling/stratified_sampler.h"
+#include "sampling/sampler.h"
+#include "sampling/sampler_registry.h"
 #include "scene/json_node.h"
 
 namespace verity {
 
 std::unique_ptr<Sampler> makeSampler(const JsonNode* node) {
-  if (!node) return std::make_unique<IndependentSampler>();
+  if (!node) return samplerTypes().front().build(nullptr);
   if (!node->isObject()) node->fail("expected a sampler object");
-  const std::string type = node->has({"type"}) ? node->type() : "independent";
-  if (type == "independent") return std::make_unique<IndependentSampler>();
-  if (type == "stratified") return std::make_unique<StratifiedSampler>();
-  (*node)[{"type"}].fail("unsupported sampler type \"" + type +
-                         "\" (expected independent or stratified)");
+  const std::string type = node->has({"type"}) ? node->type() : samplerTypes().front().name;
+  const SamplerType* entry = findSamplerType(type);
+  if (!entry)
+    (*node)[{"type"}].fail("unsupported sampler type \"" + type + "\" (expected one of " +
+                           samplerTypeList() + ")");
+  return entry->build(node);
 }
 
 }  // namespace verity

@@ -1,0 +1,56 @@
+#include "sampling/halton_sampler.h"
+
+#include <boost/math/special_functions/prime.hpp>
+
+#include "core/hash.h"
+#include "sampling/independent_sampler.h"
+#include "scene/json_node.h"
+
+namespace verity {
+
+void HaltonSampler::startPixelSample(const Point2i& pixel, int index) {
+  pixelKey_ = (uint64_t(uint32_t(pixel.y())) << 32) | uint32_t(pixel.x());
+  index_ = index;
+  dimension_ = 0;
+}
+
+float HaltonSampler::sample(int dimension) const {
+  if (dimension > static_cast<int>(boost::math::max_prime))  // the last prime index
+    return uniformFloat(static_cast<uint32_t>(hashValues(seed_, pixelKey_, index_, dimension)));
+  const uint32_t base = boost::math::prime(static_cast<unsigned>(dimension));
+  return unitFloat(radicalInverse(static_cast<uint32_t>(index_), base, scramble_,
+                                  hashValues(seed_, pixelKey_, dimension)));
+}
+
+float HaltonSampler::next1D() {
+  return sample(dimension_++);
+}
+
+Point2f HaltonSampler::next2D() {
+  const Point2f u(sample(dimension_), sample(dimension_ + 1));
+  dimension_ += 2;
+  return u;
+}
+
+SamplerType haltonSamplerType() {
+  return {"halton",
+          {},
+          "Halton points per pixel, their digits scrambled per pixel and dimension",
+          {{"randomization",
+            {},
+            ValueType::String,
+            "\"owen\" or \"permute_digits\"",
+            "\"owen\"",
+            "how the digits are scrambled: nested, keyed by the digits before (Owen 1995), or "
+            "one permutation per digit position (Matousek 1998)"}},
+          [](const JsonNode* node) -> std::unique_ptr<Sampler> {
+            const std::string r = node ? node->getString({"randomization"}, "owen") : "owen";
+            if (r == "owen") return std::make_unique<HaltonSampler>(DigitScramble::Owen);
+            if (r == "permute_digits")
+              return std::make_unique<HaltonSampler>(DigitScramble::PermuteDigits);
+            (*node)[{"randomization"}].fail("unknown Halton randomization \"" + r +
+                                            "\" (expected owen or permute_digits)");
+          }};
+}
+
+}  // namespace verity

@@ -1,0 +1,42 @@
+#include "sampling/radical_inverse.h"
+
+#include <algorithm>
+
+#include "core/hash.h"
+#include "core/math.h"
+
+namespace verity {
+
+DigitFraction radicalInverse(uint32_t index, uint32_t base, DigitScramble scramble, uint64_t key) {
+  DigitFraction x;
+  uint32_t rest = index;  // 32-bit: divisions are several times faster than 64-bit ones
+  uint64_t prefix = 0;    // index mod base^j: the digits below position j, which Owen's keys read
+  uint64_t weight = 1;    // base^j
+  // Plain inverses stop with the index's digits; scrambled ones go on to below 2^-24.
+  for (int j = 0; rest > 0 || (scramble != DigitScramble::None && x.denominator < (1u << 24));
+       ++j) {
+    const uint32_t next = rest / base, digit = rest - next * base;
+    rest = next;
+    uint32_t permuted = digit;
+    if (scramble != DigitScramble::None) {
+      const uint64_t h =
+          scramble == DigitScramble::Owen ? hashValues(key, j, prefix) : hashValues(key, j);
+      // m in [1, base) and s in [0, base) by multiply-and-shift (bias below base / 2^32).
+      const uint32_t m = 1 + static_cast<uint32_t>(((h & 0xffffffffu) * (base - 1)) >> 32);
+      const uint32_t s = static_cast<uint32_t>(((h >> 32) * base) >> 32);
+      permuted = static_cast<uint32_t>((uint64_t(m) * digit + s) % base);
+    }
+    x.numerator = x.numerator * base + permuted;
+    x.denominator *= base;
+    prefix += digit * weight;
+    weight *= base;
+  }
+  return x;
+}
+
+float unitFloat(const DigitFraction& x) {
+  const double value = static_cast<double>(x.numerator) / static_cast<double>(x.denominator);
+  return std::min(static_cast<float>(value), kOneMinusEpsilon);
+}
+
+}  // namespace verity

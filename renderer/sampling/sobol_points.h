@@ -1,0 +1,48 @@
+// The first two dimensions of the Sobol sequence in base 2 and their hash-based Owen
+// scrambling. Values are 32-bit fractions (x / 2^32).
+//
+// Dimension 0 is the van der Corput sequence (the bits of the index mirrored about the radix
+// point); dimension 1 is its companion from the primitive polynomial x + 1, whose generator
+// matrix is Pascal's triangle mod 2 (Sobol 1967). Together their first 2^m points, and every
+// aligned block of 2^m consecutive points, form a (0, m, 2)-net: each of the 2^m elementary
+// intervals [a 2^-k, (a+1) 2^-k) x [c 2^-(m-k), (c+1) 2^-(m-k)) holds exactly one point.
+#pragma once
+
+#include <cstdint>
+
+namespace verity {
+
+inline uint32_t reverseBits(uint32_t x) {
+  x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+  x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
+  x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
+  return (x >> 16) | (x << 16);
+}
+
+// Dimension `dimension` (0 or 1) of Sobol point `index`.
+inline uint32_t sobolSample(uint32_t index, int dimension) {
+  if (dimension == 0) return reverseBits(index);
+  uint32_t x = 0;
+  // Direction numbers of dimension 1: v_0 = 1/2, v_k = v_(k-1) xor v_(k-1)/2.
+  for (uint32_t v = 0x80000000u; index != 0; index >>= 1, v ^= v >> 1)
+    if (index & 1) x ^= v;
+  return x;
+}
+
+// An Owen scramble of the bits of x (a random permutation of each bit keyed by the bits above
+// it) by Burley's hash (Burley 2020, "Practical Hash-based Owen Scrambling", JCGT 9(4)):
+// mirrored, the Laine-Karras style hash below changes each bit by a function of the bits
+// below it alone (adding the seed carries upward; multiplying by an even constant reads only
+// lower bits), so mirrored back it is a nested scramble, which keeps every (0, m, 2)-net a net.
+inline uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
+  x = reverseBits(x);
+  x += seed;
+  x ^= x * 0x6c50b47cu;
+  x ^= x * 0xb82f1e52u;
+  x ^= x * 0xc7afe638u;
+  x ^= x * 0x8d22f6e6u;
+  return reverseBits(x);
+}
+
+}  // namespace verity

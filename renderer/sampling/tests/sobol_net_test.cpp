@@ -1,0 +1,106 @@
+// The net property of the padded Sobol points: the first 2^m points of the 2D Sobol sequence,
+// plain and Owen-scrambled with a shuffled index, and of every 2D request of the sampler, hold
+// exactly one point in each elementary interval [a 2^-k, (a+1) 2^-k) x [c 2^-(m-k), (c+1)
+// 2^-(m-k)), for every k; 1D requests hold one point per interval of length 2^-m.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <vector>
+
+#include "sampling/sobol_points.h"
+#include "sampling/sobol_sampler.h"
+
+namespace verity {
+namespace {
+
+struct Point32 {
+  uint32_t x, y;  // fractions of 2^32
+};
+
+// Empty when the points form a (0, m, 2)-net, else the first interval shape that fails.
+std::string netFailure(const std::vector<Point32>& points, int m) {
+  if (points.size() != (size_t(1) << m)) return "wrong point count";
+  for (int k = 0; k <= m; ++k) {
+    std::vector<char> occupied(points.size());
+    size_t twice = 0;
+    for (const Point32& p : points) {
+      const uint64_t a = k ? p.x >> (32 - k) : 0, c = m - k ? p.y >> (32 - (m - k)) : 0;
+      twice += occupied[(a << (m - k)) | c]++ != 0;
+    }
+    if (twice)
+      return "intervals 2^-" + std::to_string(k) + " x 2^-" + std::to_string(m - k) + ": " +
+             std::to_string(twice) + " points in an occupied one";
+  }
+  return "";
+}
+
+uint32_t fraction32(float u) {
+  EXPECT_GE(u, 0.0f);
+  EXPECT_LT(u, 1.0f);
+  return static_cast<uint32_t>(std::ldexp(double(u), 32));  // exact: u is a multiple of 2^-24
+}
+
+TEST(SobolPoints, FirstPointsFormNets) {
+  for (int m = 0; m <= 16; ++m) {
+    std::vector<Point32> points;
+    for (uint32_t i = 0; i < (1u << m); ++i)
+      points.push_back({sobolSample(i, 0), sobolSample(i, 1)});
+    EXPECT_EQ(netFailure(points, m), "") << "m = " << m;
+  }
+}
+
+TEST(SobolPoints, ShuffledAndScrambledPointsFormNets) {
+  for (uint32_t seed : {1u, 0x9e3779b9u, 0xdeadbeefu})
+    for (int m = 0; m <= 16; ++m) {
+      std::vector<Point32> points;
+      for (uint32_t i = 0; i < (1u << m); ++i) {
+        const uint32_t index = nestedUniformScramble(i, seed);
+        points.push_back({nestedUniformScramble(sobolSample(index, 0), seed * 3 + 1),
+                          nestedUniformScramble(sobolSample(index, 1), seed * 5 + 2)});
+      }
+      EXPECT_EQ(netFailure(points, m), "") << "m = " << m << ", seed " << seed;
+    }
+}
+
+TEST(SobolPoints, ScramblingChangesThePoints) {
+  int moved = 0;
+  for (uint32_t i = 0; i < 256; ++i)
+    moved += nestedUniformScramble(sobolSample(i, 0), 7) != sobolSample(i, 0);
+  EXPECT_GT(moved, 200);
+}
+
+// Every request of the sampler, in the order a path makes them (2D, 2D, 1D, 2D, 1D, 2D).
+TEST(SobolSampler, EveryRequestIsANetOverAPixelsSamples) {
+  const bool is2D[] = {true, true, false, true, false, true};
+  constexpr int kRequests = 6;
+  for (const Point2i& pixel : {Point2i(0, 0), Point2i(17, 3)})
+    for (int m = 0; m <= 12; ++m) {
+      std::vector<Point32> points[kRequests];
+      SobolSampler sampler;
+      sampler.setSeed(12345);
+      sampler.setSamplesPerPixel(1 << m);
+      for (int i = 0; i < (1 << m); ++i) {
+        sampler.startPixelSample(pixel, i);
+        for (int r = 0; r < kRequests; ++r) {
+          if (is2D[r]) {
+            const Point2f u = sampler.next2D();
+            points[r].push_back({fraction32(u.x()), fraction32(u.y())});
+          } else {
+            points[r].push_back({fraction32(sampler.next1D()), 0});
+          }
+        }
+      }
+      for (int r = 0; r < kRequests; ++r) {
+        if (is2D[r]) {
+          EXPECT_EQ(netFailure(points[r], m), "") << "request " << r << ", m = " << m;
+        } else {
+          std::set<uint32_t> intervals;
+          for (const Point32& p : points[r]) intervals.insert(m ? p.x >> (32 - m) : 0);
+          EXPECT_EQ(intervals.size(), size_t(1) << m) << "request " << r << ", m = " << m;
+        }
+      }
+    }
+}
+
+}  // namespace
+}  // namespace verity
