@@ -40,6 +40,10 @@ std::shared_ptr<const Material> MaterialFactory::reference(const JsonNode& node)
   if (node.isString()) {
     const std::string name = node.asString();
     auto it = named_.find(name);
+    if (it == named_.end() && listed_.count(name))
+      node.fail("\"" + name +
+                "\" is this material or one defined after it: a blend may name only materials "
+                "defined before it in \"materials\"");
     if (it == named_.end()) node.fail("no material is named \"" + name + "\"");
     return it->second;
   }

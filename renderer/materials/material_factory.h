@@ -5,6 +5,8 @@
 
 #include <map>
 #include <memory>
+#include <set>
+#include <string>
 #include <vector>
 
 #include "materials/material.h"
@@ -22,6 +24,9 @@ class MaterialFactory {
   std::shared_ptr<const Material> make(const JsonNode& node);
   // `nameNode` is the "name" member, for the error when the name is already taken.
   void addNamed(const JsonNode& nameNode, std::shared_ptr<const Material> material);
+  // Every name the scene's "materials" list gives, so that a reference to one not yet defined
+  // (a blend naming itself or a later material) is told apart from an unknown name.
+  void setListedNames(std::set<std::string> names) { listed_ = std::move(names); }
   // A material's name or an inline material object.
   std::shared_ptr<const Material> reference(const JsonNode& node);
 
@@ -35,6 +40,7 @@ class MaterialFactory {
   TextureFactory& textures_;
   std::vector<VerityError>& warnings_;
   std::map<std::string, std::shared_ptr<const Material>> named_;
+  std::set<std::string> listed_;
 };
 
 }  // namespace verity

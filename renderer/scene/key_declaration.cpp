@@ -18,6 +18,8 @@ const char* valueTypeText(ValueType type) {
       return "number or [r, g, b]";
     case ValueType::Vector3:
       return "number or [x, y, z]";
+    case ValueType::Size2:
+      return "number or [width, height]";
     case ValueType::Texture:
       return "texture";
     case ValueType::Material:

@@ -17,6 +17,7 @@ enum class ValueType {
   String,     // free text or one of the names the range lists
   Rgb,        // a number (grey) or [r, g, b]
   Vector3,    // a number (all three components) or [x, y, z]
+  Size2,      // a number (both) or [width, height]
   Texture,    // a number, [r, g, b] or a texture object
   Material,   // a material's name or a material object
   Transform,  // a transform object, or an array of them

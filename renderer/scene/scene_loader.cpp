@@ -1,11 +1,11 @@
 #include "scene/scene_loader.h"
 
+#include "lights/background_registry.h"
 #include "materials/material_factory.h"
+#include "sampling/sampler_registry.h"
+#include "scene/scene_keys.h"
 #include "scene/transform_parser.h"
-#include "shapes/obj_loader.h"
-#include "shapes/quad.h"
-#include "shapes/sphere.h"
-#include "shapes/triangle_mesh.h"
+#include "shapes/shape_registry.h"
 
 namespace verity {
 
@@ -23,8 +23,14 @@ bool withinExtent(const Point3f& p) {
 
 std::unique_ptr<Camera> parseCamera(const JsonNode& node) {
   if (!node.isObject()) node.fail("expected a camera object");
+  node.declare({"the camera", {&cameraKeys()}});
   const Transform toWorld = parseOptionalTransform(node);
   if (!withinExtent(toWorld.point(Point3f::Zero()))) node[{"transform"}].fail(kExtentProblem);
+  // The camera maps its image plane through the transform: a shear or non-uniform scale
+  // would squash the image, as it would a sphere.
+  if (!toWorld.isSimilarity(nullptr))
+    node[{"transform"}].fail(
+        "a camera's transform must scale uniformly (no shear or non-uniform scale)");
   Vector2i resolution(512, 512);
   if (auto r = node.find({"resolution"})) {
     resolution = r->asVector2i(1, 1 << 15);
@@ -46,24 +52,12 @@ std::unique_ptr<EnvironmentLight> parseBackground(const JsonNode& node, TextureF
   }
   if (!node.isObject()) node.fail("expected a number, [r,g,b] or a background object");
   const std::string type = node.type();
-  std::unique_ptr<EnvironmentLight> light;
-  if (type == "constant") {
-    const JsonNode color = node[{"color"}];
-    const Vector3f c = color.asVector3();
-    if ((c.array() < 0).any()) color.fail("background radiance must not be negative");
-    light = std::make_unique<EnvironmentLight>(Color3(c.array()));
-  } else if (type == "image") {
-    const JsonNode file = node[{"filename"}];
-    try {
-      light = std::make_unique<EnvironmentLight>(
-          std::make_shared<ImageTexture>(node.resolve(file.asString()), file.path()));
-    } catch (const VerityError& e) {
-      if (!e.file().empty()) throw;
-      throw VerityError(node.file().string(), e.jsonPath(), e.problem());
-    }
-  } else {
-    node[{"type"}].fail("unknown background type \"" + type + "\" (expected constant or image)");
-  }
+  const BackgroundType* entry = findBackgroundType(type);
+  if (!entry)
+    node[{"type"}].fail("unknown background type \"" + type + "\" (expected " +
+                        backgroundTypeList() + ")");
+  node.declare({"background " + entry->name, {&backgroundCommonKeys(), &entry->keys}});
+  std::unique_ptr<EnvironmentLight> light = entry->build(node);
   node.rejectUnknownKeys();
   return light;
 }
@@ -77,45 +71,20 @@ class SurfaceParser {
     const std::string type = node.type();
     const Transform toWorld = parent * parseOptionalTransform(node);
     if (type == "group") {
+      node.declare({"surface group", {&surfaceCommonKeys(), &groupKeys()}});
       const JsonNode children = node[{"children"}];
       if (!children.isArray()) children.fail("expected an array of surfaces");
       for (size_t i = 0; i < children.size(); ++i) parse(children[i], toWorld);
       node.rejectUnknownKeys();
       return;
     }
-    std::unique_ptr<Shape> shape;
-    if (type == "sphere") {
-      const float radius = node.getFloat({"radius"}, 1, Range::positive());
-      if (!toWorld.isSimilarity(nullptr))
-        node[{"transform"}].fail(
-            "a sphere's transform must scale uniformly (no shear or non-uniform scale)");
-      shape = std::make_unique<Sphere>(toWorld, radius);
-    } else if (type == "quad") {
-      Vector2f size(1, 1);
-      if (auto s = node.find({"size"})) {
-        if (s->isNumber()) {
-          size.setConstant(s->asFloat(Range::positive()));
-        } else {
-          if (!s->isArray() || s->size() != 2) s->fail("expected a number or [width, height]");
-          size = Vector2f((*s)[0].asFloat(Range::positive()), (*s)[1].asFloat(Range::positive()));
-        }
-      }
-      shape = std::make_unique<Quad>(toWorld, size);
-    } else if (type == "mesh") {
-      const JsonNode file = node[{"filename"}];
-      try {
-        shape = std::make_unique<TriangleMesh>(
-            keepFront(loadObj(node.resolve(file.asString()), toWorld, file.path()), toWorld));
-      } catch (const VerityError& e) {
-        if (!e.file().empty()) throw;
-        throw VerityError(node.file().string(), e.jsonPath(), e.problem());
-      }
-    } else if (type == "triangle") {
-      shape = std::make_unique<TriangleMesh>(keepFront(parseTriangle(node, toWorld), toWorld));
-    } else {
-      node[{"type"}].fail("unknown surface type \"" + type +
-                          "\" (expected sphere, quad, mesh, triangle or group)");
-    }
+    const ShapeType* entry = findShapeType(type);
+    if (!entry)
+      node[{"type"}].fail("unknown surface type \"" + type + "\" (expected " + shapeTypeList() +
+                          " or group)");
+    node.declare(
+        {"surface " + entry->name, {&surfaceCommonKeys(), &shapeCommonKeys(), &entry->keys}});
+    std::unique_ptr<Shape> shape = entry->build(node, toWorld);
     const Bounds3f bounds = shape->bounds();
     if (!withinExtent(bounds.lo) || !withinExtent(bounds.hi)) node.fail(kExtentProblem);
     auto material = materials_.reference(node[{"material"}]);
@@ -124,48 +93,18 @@ class SurfaceParser {
   }
 
  private:
-  // A triangle's front side is the side its winding turns counter-clockwise around; a
-  // mirroring transform reverses the winding, so it is reversed back to keep the front on the
-  // same side of the surface (as quads do; pbrt flips such normals too).
-  static MeshData keepFront(MeshData mesh, const Transform& toWorld) {
-    if (toWorld.flipsHandedness())
-      for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3)
-        std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
-    return mesh;
-  }
-
-  static MeshData parseTriangle(const JsonNode& node, const Transform& toWorld) {
-    MeshData mesh;
-    const JsonNode positions = node[{"positions"}];
-    if (!positions.isArray() || positions.size() != 3) positions.fail("expected 3 points");
-    for (size_t i = 0; i < 3; ++i)
-      mesh.positions.push_back(toWorld.point(positions[i].asVector3()));
-    if (auto normals = node.find({"normals"})) {
-      if (!normals->isArray() || normals->size() != 3) normals->fail("expected 3 normals");
-      for (size_t i = 0; i < 3; ++i) {
-        const Normal3f n = toWorld.normal((*normals)[i].asVector3());
-        if (!(n.norm() > 0)) (*normals)[i].fail("a normal must not be zero");
-        mesh.normals.push_back(n.normalized());
-      }
-    }
-    if (auto uvs = node.find({"uvs"})) {
-      if (!uvs->isArray() || uvs->size() != 3) uvs->fail("expected 3 uv pairs");
-      for (size_t i = 0; i < 3; ++i) {
-        const JsonNode uv = (*uvs)[i];
-        if (!uv.isArray() || uv.size() != 2) uv.fail("expected [u, v]");
-        mesh.uvs.emplace_back(uv[0].asFloat(), uv[1].asFloat());
-      }
-    }
-    mesh.indices = {0, 1, 2};
-    return mesh;
-  }
-
   Scene& scene_;
   MaterialFactory& materials_;
 };
 
 std::unique_ptr<Sampler> parseSampler(const JsonNode& root) {
   auto node = root.find({"sampler"});
+  // An unknown type is left to makeSampler's error.
+  if (node && node->isObject()) {
+    const std::string type = node->has({"type"}) ? node->type() : samplerTypes().front().name;
+    if (const SamplerType* entry = findSamplerType(type))
+      node->declare({"sampler " + entry->name, {&samplerCommonKeys(), &entry->keys}});
+  }
   auto sampler = makeSampler(node ? &*node : nullptr);
   const int imageSamples = root.getInt({"image_samples"}, 1, 1, 1 << 24);
   int spp = imageSamples;
@@ -188,6 +127,7 @@ SceneFile build(const JsonNode& root, const std::filesystem::path& file) {
   Scene& scene = *result.scene;
   TextureFactory textures;
   MaterialFactory materials(textures, result.warnings);
+  root.declare({"the scene file", {&sceneKeys()}});
 
   scene.setCamera(parseCamera(root[{"camera"}]));
   if (auto bg = root.find({"background"})) scene.setBackground(parseBackground(*bg, textures));
@@ -198,6 +138,12 @@ SceneFile build(const JsonNode& root, const std::filesystem::path& file) {
 
   if (auto list = root.find({"materials"})) {
     if (!list->isArray()) list->fail("expected an array of materials");
+    std::set<std::string> names;
+    for (size_t i = 0; i < list->size(); ++i)
+      if (const JsonNode m = (*list)[i]; m.isObject())
+        if (const auto name = m.find({"name"}); name && name->isString())
+          names.insert(name->asString());
+    materials.setListedNames(std::move(names));
     for (size_t i = 0; i < list->size(); ++i) {
       const JsonNode m = (*list)[i];
       const JsonNode name = m[{"name"}];
@@ -219,6 +165,8 @@ SceneFile build(const JsonNode& root, const std::filesystem::path& file) {
 }  // namespace
 
 SceneFile loadScene(const std::filesystem::path& file) {
+  if (std::filesystem::is_directory(file))
+    throw VerityError(file.string(), "", "is a directory, not a scene file");
   return build(JsonNode::load(file), file);
 }
 

@@ -1,4 +1,4 @@
-// Reads a DIRT-format JSON scene (shared/docs/scene-format.md) into a Scene and the render
+// Reads a DIRT-format JSON scene (docs/scene-format.md) into a Scene and the render
 // settings the file asks for.
 #pragma once
 

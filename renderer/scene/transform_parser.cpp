@@ -9,6 +9,7 @@ Matrix4f lookAt(const Vector3f& from, const Vector3f& at, const Vector3f& up,
   const Vector3f dir = at - from;
   if (!(dir.stableNorm() > 0)) node.fail("\"from\" and \"at\" are the same point");
   const Vector3f z = -dir.stableNormalized();  // the camera looks down −z
+  if (!(up.stableNorm() > 0)) node[{"up"}].fail("\"up\" must not be the zero vector");
   const Vector3f xRaw = up.stableNormalized().cross(z);
   if (!(xRaw.norm() > 1e-12f)) node.fail("\"up\" is parallel to the viewing direction");
   const Vector3f x = xRaw.normalized();
@@ -23,6 +24,7 @@ Matrix4f lookAt(const Vector3f& from, const Vector3f& at, const Vector3f& up,
 
 Matrix4f parseOne(const JsonNode& node) {
   if (!node.isObject()) node.fail("expected a transform object");
+  node.declare({"a transform", {&transformKeys()}});
   Matrix4f m = Matrix4f::Identity();
   int forms = 0;
   if (node.has({"from"}) || node.has({"at", "to"}) || node.has({"up"})) {
@@ -77,6 +79,29 @@ Matrix4f parseOne(const JsonNode& node) {
   return m;
 }
 }  // namespace
+
+const KeyList& transformKeys() {
+  static const KeyList keys = {
+      {"from", {}, ValueType::Vector3, "", "[0, 0, 1]", "look-at: the eye point"},
+      {"at", {"to"}, ValueType::Vector3, "not \"from\"", "[0, 0, 0]",
+       "look-at: the point the local -z axis is turned towards"},
+      {"up", {}, ValueType::Vector3, "not zero, not along at - from", "[0, 1, 0]",
+       "look-at: the direction that local +y leans towards"},
+      {"o", {}, ValueType::Vector3, "", "[0, 0, 0]", "frame: where the local origin goes"},
+      {"x", {}, ValueType::Vector3, "", "[1, 0, 0]", "frame: where local x goes"},
+      {"y", {}, ValueType::Vector3, "", "[0, 1, 0]", "frame: where local y goes"},
+      {"z", {}, ValueType::Vector3, "", "[0, 0, 1]", "frame: where local z goes"},
+      {"translate", {}, ValueType::Vector3, "", "—", "a translation"},
+      {"scale", {}, ValueType::Vector3, "no component 0", "—",
+       "a scale along the axes (one number: uniform)"},
+      {"axis", {}, ValueType::Vector3, "not zero", "required with angle",
+       "rotation: the axis (through the origin)"},
+      {"angle", {}, ValueType::Number, "", "required with axis",
+       "rotation: the angle in degrees, right-handed (counter-clockwise seen from the axis's tip)"},
+      {"matrix", {}, ValueType::Array, "16 numbers, row-major, last row [0, 0, 0, 1]", "—",
+       "an affine matrix"}};
+  return keys;
+}
 
 Transform parseTransform(const JsonNode& node) {
   Matrix4f m = Matrix4f::Identity();

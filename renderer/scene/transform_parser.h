@@ -7,6 +7,9 @@
 namespace verity {
 
 Transform parseTransform(const JsonNode& node);
+// The keys of one transform object: each object uses the keys of exactly one form (look-at,
+// frame, translate, scale, axis-angle or matrix).
+const KeyList& transformKeys();
 // Member "transform" of `parent`, or the identity.
 Transform parseOptionalTransform(const JsonNode& parent);
 

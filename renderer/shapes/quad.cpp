@@ -1,5 +1,7 @@
 #include "shapes/quad.h"
 
+#include "scene/json_node.h"
+
 namespace verity {
 
 Quad::Quad(const Transform& toWorld, const Vector2f& size) {
@@ -55,6 +57,26 @@ Bounds3f Quad::bounds() const {
 
 ShapeSample Quad::sampleArea(const Point2f& u) const {
   return {corner_ + u.x() * edgeU_ + u.y() * edgeV_, normal_, pError_, 1.0f / area_};
+}
+
+ShapeType quadType() {
+  return {"quad",
+          "a rectangle centred in the local xy-plane, front side +z",
+          {{"size", {}, ValueType::Size2, "each > 0",
+            "1", "the side lengths along local x and y"}},
+          [](const JsonNode& node, const Transform& toWorld) -> std::unique_ptr<Shape> {
+            Vector2f size(1, 1);
+            if (auto s = node.find({"size"})) {
+              if (s->isNumber()) {
+                size.setConstant(s->asFloat(Range::positive()));
+              } else {
+                if (!s->isArray() || s->size() != 2) s->fail("expected a number or [width, height]");
+                size = Vector2f((*s)[0].asFloat(Range::positive()),
+                                (*s)[1].asFloat(Range::positive()));
+              }
+            }
+            return std::make_unique<Quad>(toWorld, size);
+          }};
 }
 
 }  // namespace verity

@@ -6,6 +6,7 @@
 
 #include "core/transform.h"
 #include "shapes/shape.h"
+#include "shapes/shape_type.h"
 
 namespace verity {
 
@@ -32,5 +33,8 @@ class Quad : public Shape {
   Vector3f pError_;
   float area_;
 };
+
+// The scene format's "quad".
+ShapeType quadType();
 
 }  // namespace verity

@@ -1,6 +1,7 @@
 #include "shapes/sphere.h"
 
 #include "sampling/warp.h"
+#include "scene/json_node.h"
 
 namespace verity {
 
@@ -86,6 +87,19 @@ float Sphere::pdfSolidAngle(const Point3f& ref, const Point3f& p, const Normal3f
   const float sin2ThetaMax = r2 / dist2;
   const float oneMinusCos = sin2ThetaMax / (1 + safeSqrt(1 - sin2ThetaMax));
   return 1.0f / (2 * kPi * oneMinusCos);
+}
+
+ShapeType sphereType() {
+  return {"sphere",
+          "a sphere about the local origin; its poles on the local y axis",
+          {{"radius", {}, ValueType::Number, "> 0", "1", "the radius, in local units"}},
+          [](const JsonNode& node, const Transform& toWorld) -> std::unique_ptr<Shape> {
+            const float radius = node.getFloat({"radius"}, 1, Range::positive());
+            if (!toWorld.isSimilarity(nullptr))
+              node[{"transform"}].fail(
+                  "a sphere's transform must scale uniformly (no shear or non-uniform scale)");
+            return std::make_unique<Sphere>(toWorld, radius);
+          }};
 }
 
 }  // namespace verity

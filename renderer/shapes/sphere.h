@@ -4,6 +4,7 @@
 
 #include "core/transform.h"
 #include "shapes/shape.h"
+#include "shapes/shape_type.h"
 
 namespace verity {
 
@@ -31,5 +32,8 @@ class Sphere : public Shape {
   Vector3f pError_;
   Matrix3f rotation_;  // local axes in world space (columns)
 };
+
+// The scene format's "sphere".
+ShapeType sphereType();
 
 }  // namespace verity

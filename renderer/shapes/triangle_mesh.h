@@ -5,6 +5,7 @@
 
 #include "sampling/distribution.h"
 #include "shapes/shape.h"
+#include "shapes/shape_type.h"
 
 namespace verity {
 
@@ -36,5 +37,9 @@ class TriangleMesh : public Shape {
   MeshData data_;
   Distribution1D areas_;
 };
+
+// The scene format's "mesh" (an OBJ file) and "triangle" (triangle_mesh_types.cpp).
+ShapeType meshType();
+ShapeType triangleType();
 
 }  // namespace verity

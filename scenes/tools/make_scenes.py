@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Write Verity's JSON scenes (DIRT format, see shared/docs/scene-format.md).
+"""Write Verity's JSON scenes (DIRT format, see docs/scene-format.md).
 
 The scenes in scenes/*.json are plain files that can be edited by hand; this
 script is how they were first written, so that the eight Cornell-box variants

@@ -1,0 +1,34 @@
+// Every background type of the scene format's "background" object, from one table: the scene
+// loader looks types up here, and docs/scene-format.md reads their names and keys from here.
+// A bare number or [r, g, b] is a constant background too (the scene loader reads it).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lights/environment_light.h"
+#include "scene/key_declaration.h"
+
+namespace verity {
+
+class JsonNode;
+
+struct BackgroundType {
+  using Build = std::unique_ptr<EnvironmentLight> (*)(const JsonNode& node);
+  std::string name;
+  std::string description;
+  KeyList keys;  // besides backgroundCommonKeys()
+  Build build;
+};
+
+// In the order of the table in background_registry.cpp.
+const std::vector<BackgroundType>& backgroundTypes();
+// The type named `name` (lower case); null if none.
+const BackgroundType* findBackgroundType(const std::string& name);
+// "constant or image", for errors.
+std::string backgroundTypeList();
+// The keys every background object takes: "type".
+const KeyList& backgroundCommonKeys();
+
+}  // namespace verity
