@@ -12,7 +12,8 @@
 # (verity_chi2_core, verity_stats) and the targets that do not link verity_renderer compile
 # without them. A header is included before each file's own includes, which is harmless here
 # (no file defines a macro before its includes). VERITY_PRECOMPILED_HEADERS=OFF compiles every
-# file on its own, which shows a missing include.
+# file on its own, which shows a missing include. ccache reuses its results for these files
+# only with CCACHE_SLOPPINESS=pch_defines,time_macros; without it, it compiles them.
 option(VERITY_PRECOMPILED_HEADERS "Precompile the third-party headers most files include" ON)
 
 set(VERITY_PRECOMPILED_LIBRARY_HEADERS
