@@ -96,9 +96,9 @@ Color3 Bdpt::Li(const Scene& scene, Sampler& sampler, const Ray& ray,
   MisPath& mis = scratchSpace.mis;
   // A full path of s + t vertices has s + t − 2 bounces.
   const int maxVertices = maxBounces_ + 2;
-  traceCameraSubpath(scene, sampler, ray, maxVertices, camera, context.stats);
+  traceCameraSubpath(scene, sampler, ray, maxVertices, roulette_, camera, context.stats);
   const float lightNextEventPdf =
-      traceLightSubpath(scene, sampler, maxVertices - 1, light, context.stats);
+      traceLightSubpath(scene, sampler, maxVertices - 1, roulette_, light, context.stats);
   const int nCamera = static_cast<int>(camera.size()), nLight = static_cast<int>(light.size());
 
   Color3 L = Color3::Zero();

@@ -19,6 +19,7 @@
 #pragma once
 
 #include "integrators/integrator.h"
+#include "integrators/russian_roulette.h"
 
 namespace verity {
 
@@ -31,8 +32,8 @@ class Bdpt : public Integrator {
  public:
   // `dropped`, a test hook, names a strategy whose contribution is left out (the default names
   // none): the tests that compare BDPT with path tracing must then fail.
-  Bdpt(int maxBounces, float misPower, BdptStrategy dropped = {})
-      : maxBounces_(maxBounces), misPower_(misPower), dropped_(dropped) {}
+  Bdpt(int maxBounces, float misPower, RussianRoulette roulette, BdptStrategy dropped = {})
+      : maxBounces_(maxBounces), misPower_(misPower), roulette_(roulette), dropped_(dropped) {}
   Color3 Li(const Scene& scene, Sampler& sampler, const Ray& ray,
             SampleContext& context) const override;
 
@@ -41,6 +42,7 @@ class Bdpt : public Integrator {
 
   int maxBounces_;
   float misPower_;
+  RussianRoulette roulette_;
   BdptStrategy dropped_;
 };
 

@@ -16,8 +16,8 @@ const Light* emitterOf(const PathVertex& v) {
 // ray's direction at the last vertex: per solid angle, or for a ray from the environment's
 // disk the disk's density per area, projected onto the surface hit.
 void randomWalk(const Scene& scene, Sampler& sampler, Ray ray, Color3 beta, float pdfDir,
-                TransportMode mode, int maxVertices, std::vector<PathVertex>& path,
-                PathStats& stats) {
+                TransportMode mode, int maxVertices, const RussianRoulette& roulette,
+                std::vector<PathVertex>& path, PathStats& stats) {
   // Throughput of the scattering events alone, for roulette (light subpaths start with the
   // emitted power, which says nothing about how much a path has lost).
   Color3 scattering = Color3::Ones();
@@ -77,19 +77,18 @@ void randomWalk(const Scene& scene, Sampler& sampler, Ray ray, Color3 beta, floa
     if (isBlack(beta) || !beta.allFinite()) return;
     ray = si.spawnRay(wo);
     pdfDir = pdfFwd;
-    if (bounce + 1 >= kSubpathRouletteDepth) {
-      const float survive = std::max(std::min(1.0f, maxComponent(scattering)), 0.05f);
-      if (sampler.next1D() >= survive) return;
-      beta /= survive;
-      scattering /= survive;
-    }
+    float survival;
+    if (!roulette.survives(bounce, scattering, sampler, &survival)) return;
+    beta /= survival;
+    scattering /= survival;
   }
 }
 
 }  // namespace
 
 void traceCameraSubpath(const Scene& scene, Sampler& sampler, const Ray& ray, int maxVertices,
-                        std::vector<PathVertex>& path, PathStats& stats) {
+                        const RussianRoulette& roulette, std::vector<PathVertex>& path,
+                        PathStats& stats) {
   path.clear();
   if (maxVertices < 1) return;
   PathVertex camera;
@@ -102,11 +101,12 @@ void traceCameraSubpath(const Scene& scene, Sampler& sampler, const Ray& ray, in
   if (!(pdfDir > 0)) return;
   // We·cos θ / (pdfPos·pdfDir) = 1 for an importance normalised as the camera's.
   randomWalk(scene, sampler, ray, Color3::Ones(), pdfDir, TransportMode::Radiance, maxVertices,
-             path, stats);
+             roulette, path, stats);
 }
 
 float traceLightSubpath(const Scene& scene, Sampler& sampler, int maxVertices,
-                        std::vector<PathVertex>& path, PathStats& stats) {
+                        const RussianRoulette& roulette, std::vector<PathVertex>& path,
+                        PathStats& stats) {
   path.clear();
   float pmf = 0;
   const Light* light = scene.sampleLight(sampler.next1D(), &pmf);
@@ -145,8 +145,8 @@ float traceLightSubpath(const Scene& scene, Sampler& sampler, int maxVertices,
   origin.beta = Color3::Constant(1.0f / origin.pdfFwd);
   if (!beta.allFinite() || !origin.beta.allFinite()) return 0;
   path.push_back(origin);
-  randomWalk(scene, sampler, ray, beta, pdfNext, TransportMode::Importance, maxVertices, path,
-             stats);
+  randomWalk(scene, sampler, ray, beta, pdfNext, TransportMode::Importance, maxVertices, roulette,
+             path, stats);
   if (path.size() < 2) return 0;
   float lightPathPdf = 0, nextEventPdf = 0;
   endpointDensities(scene, path[0], &path[1], &lightPathPdf, &nextEventPdf);

@@ -9,20 +9,21 @@
 
 #include "integrators/integrator.h"
 #include "integrators/path_vertex.h"
+#include "integrators/russian_roulette.h"
 
 namespace verity {
 
-// Paths longer than this many bounces continue with probability tied to their throughput
-// (as in the path tracer). The survival probabilities are not part of the MIS densities: the
-// weights of all strategies are computed from the same densities, so they still sum to one
-// and the estimator stays unbiased; only the choice among strategies is slightly less good.
-inline constexpr int kSubpathRouletteDepth = 3;
+// Both walks end by `roulette` as the path tracer's paths do. The survival probabilities are
+// not part of the MIS densities: the weights of all strategies are computed from the same
+// densities, so they still sum to one and the estimator stays unbiased; only the choice among
+// strategies is slightly less good.
 
 // The camera subpath of `ray` (from generateRay): vertex 0 on the lens, then the surfaces it
 // scatters at, at most `maxVertices` vertices in all. A ray that escapes while the scene has
 // an emitting background ends in an Environment vertex.
 void traceCameraSubpath(const Scene& scene, Sampler& sampler, const Ray& ray, int maxVertices,
-                        std::vector<PathVertex>& path, PathStats& stats);
+                        const RussianRoulette& roulette, std::vector<PathVertex>& path,
+                        PathStats& stats);
 
 // The light subpath: an emitter chosen with the scene's light-selection probabilities (the
 // ones next-event estimation uses), an emitted ray, then the surfaces it scatters at, at most
@@ -30,7 +31,8 @@ void traceCameraSubpath(const Scene& scene, Sampler& sampler, const Ray& ray, in
 // density with which next-event estimation from vertex 1 would choose vertex 0 (0 when the
 // path has fewer than two vertices).
 float traceLightSubpath(const Scene& scene, Sampler& sampler, int maxVertices,
-                        std::vector<PathVertex>& path, PathStats& stats);
+                        const RussianRoulette& roulette, std::vector<PathVertex>& path,
+                        PathStats& stats);
 
 // Density with which the emitter of `emitter` (a Light, Environment or emitting Surface
 // vertex) sends its emitted ray to `to`, per area at `to`.

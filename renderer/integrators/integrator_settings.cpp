@@ -1,6 +1,7 @@
 #include "integrators/integrator_settings.h"
 
 #include <limits>
+#include <stdexcept>
 
 #include "integrators/integrator_registry.h"
 
@@ -46,7 +47,8 @@ IntegratorSettings parseIntegratorSettings(const JsonNode* node) {
 
 std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s) {
   const IntegratorType* type = findIntegratorType(s.type);
-  if (!type) throw VerityError("", "", "unknown integrator type \"" + s.type + "\"");
+  // Settings come from parseIntegratorSettings or a command's check of the name.
+  if (!type) throw std::logic_error("no integrator type \"" + s.type + "\"");
   return type->make(s);
 }
 

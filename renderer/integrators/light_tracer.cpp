@@ -8,7 +8,7 @@ namespace verity {
 Color3 LightTracer::Li(const Scene& scene, Sampler& sampler, const Ray&,
                        SampleContext& context) const {
   thread_local std::vector<PathVertex> light;
-  traceLightSubpath(scene, sampler, maxBounces_ + 1, light, context.stats);
+  traceLightSubpath(scene, sampler, maxBounces_ + 1, roulette_, light, context.stats);
   const Vector2i& resolution = scene.camera().resolution();
   for (int s = 1; s <= static_cast<int>(light.size()); ++s) {
     PathVertex lens;

@@ -15,18 +15,21 @@
 #pragma once
 
 #include "integrators/integrator.h"
+#include "integrators/russian_roulette.h"
 
 namespace verity {
 
 class LightTracer : public Integrator {
  public:
-  explicit LightTracer(int maxBounces) : maxBounces_(maxBounces) {}
+  LightTracer(int maxBounces, RussianRoulette roulette)
+      : maxBounces_(maxBounces), roulette_(roulette) {}
   // Always black: everything this integrator estimates arrives through splats.
   Color3 Li(const Scene& scene, Sampler& sampler, const Ray& ray,
             SampleContext& context) const override;
 
  private:
   int maxBounces_;
+  RussianRoulette roulette_;
 };
 
 }  // namespace verity

@@ -2,11 +2,6 @@
 
 namespace verity {
 
-namespace {
-// Paths longer than this many bounces continue with probability tied to their throughput.
-constexpr int kRouletteDepth = 3;
-}  // namespace
-
 float PathTracer::misWeight(float pdf, float other) const {
   if (misPower_ == 1) return pdf / (pdf + other);
   const float a = std::pow(pdf, misPower_), b = std::pow(other, misPower_);
@@ -98,11 +93,9 @@ Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay
     previous = si.p;
     ray = si.spawnRay(si.toWorld(bs->wo));
 
-    if (bounce + 1 >= kRouletteDepth) {
-      const float survive = std::min(1.0f, maxComponent(beta));
-      if (!(survive > 0) || sampler.next1D() >= std::max(survive, 0.05f)) break;
-      beta /= std::max(survive, 0.05f);
-    }
+    float survival;
+    if (!roulette_.survives(bounce, beta, sampler, &survival)) break;
+    beta /= survival;
   }
   return L;
 }

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "integrators/integrator.h"
+#include "integrators/russian_roulette.h"
 
 namespace verity {
 
@@ -14,8 +15,8 @@ class PathTracer : public Integrator {
  public:
   enum class Strategy { Materials, NextEvent, Mis };
 
-  PathTracer(Strategy strategy, int maxBounces, float misPower)
-      : strategy_(strategy), maxBounces_(maxBounces), misPower_(misPower) {}
+  PathTracer(Strategy strategy, int maxBounces, float misPower, RussianRoulette roulette)
+      : strategy_(strategy), maxBounces_(maxBounces), misPower_(misPower), roulette_(roulette) {}
   Color3 Li(const Scene& scene, Sampler& sampler, const Ray& ray,
             SampleContext& context) const override;
 
@@ -31,6 +32,7 @@ class PathTracer : public Integrator {
   Strategy strategy_;
   int maxBounces_;
   float misPower_;
+  RussianRoulette roulette_;
 };
 
 }  // namespace verity

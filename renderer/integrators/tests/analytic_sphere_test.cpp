@@ -48,8 +48,7 @@ TEST_P(AnalyticSphere, MatchesAlbedoTimesBackground) {
   Film film(file.scene->camera().resolution());
   RenderOptions options;
   options.samplesPerPixel = 64;
-  options.seed = 7;
-  file.sampler->setSeed(options.seed);
+  file.sampler->setSeed(7);
   render(*file.scene, *integrator, *file.sampler, film, options);
 
   // Pool pixels per region: mean of all samples and its standard error from the

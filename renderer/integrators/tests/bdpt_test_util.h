@@ -98,9 +98,8 @@ inline std::vector<std::vector<RegionEstimate>> estimateImageRegions(
     if (layout) components.emplace(ComponentLayout(*layout, settings.maxBounces), res);
     RenderOptions options;
     options.samplesPerPixel = 1;
-    options.seed = seedBase + pass;
     options.components = components ? &*components : nullptr;
-    file.sampler->setSeed(options.seed);
+    file.sampler->setSeed(seedBase + pass);
     const RenderStats stats = render(*file.scene, *estimator, *file.sampler, film, options);
     for (int i = 0; i < images; ++i) {
       const Film& f = i == 0 ? film : components->film(i - 1);

@@ -1,4 +1,4 @@
-// The light tracer sees an emitting background directly (issue 26, item 8): light subpaths
+// The light tracer sees an emitting background directly: light subpaths
 // that start on the environment are connected to the lens along their own direction. It must
 // match path_tracer_mats, which finds the background only by escaping rays and traces no
 // shadow ray, region by region: on scenes/analytic-sphere.json (a constant background, the
