@@ -14,7 +14,7 @@ namespace verity::studies {
 std::vector<PreparedIntegrator> prepareIntegrators(const SceneFile& file,
                                                    const std::vector<std::string>& names,
                                                    int maxBounces) {
-  if (names.empty()) throw VerityError("", "--integrators", "no integrator given");
+  if (names.empty()) throw VerityError("", "--integrator", "no integrator given");
   std::vector<PreparedIntegrator> out;
   for (const std::string& name : names) {
     PreparedIntegrator p;
@@ -49,8 +49,10 @@ void StudyOutput::append(const nlohmann::json& record) {
 
 void checkBudgets(const std::string& type, const std::vector<double>& budgets) {
   if (type != "spp" && type != "time")
-    throw VerityError("", "", "the budget is samples per pixel (--spp) or seconds (--time)");
-  if (budgets.empty()) throw VerityError("", "", "no budget given");
+    throw VerityError("", "--spp/--time",
+                      "the budget is samples per pixel (--spp) or seconds (--time), not \"" +
+                          type + "\"");
+  if (budgets.empty()) throw VerityError("", "--spp/--time", "no budget given");
   for (double b : budgets) {
     if (!(b > 0))
       throw VerityError("", "--" + type, fmt::format("budgets must be positive, not {}", b));

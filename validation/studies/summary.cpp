@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "validation/studies/fit.h"
+#include "validation/studies/summary_records.h"
 
 namespace verity::studies {
 
@@ -85,112 +86,105 @@ std::string accuracyText(const nlohmann::json& a) {
   return status;
 }
 
-}  // namespace
+// The efficiencies of the convergence groups: (scene, w, h, budget type, threads) ->
+// integrator -> efficiency.
+using EfficiencyKey = std::tuple<std::string, int, int, std::string, int>;
+using Efficiencies = std::map<EfficiencyKey, std::map<std::string, double>>;
+// The time budgets of the convergence groups: (scene, w, h, threads, seconds) -> integrator ->
+// that budget's summary.
+using EqualTimeKey = std::tuple<std::string, int, int, int, double>;
+using EqualTimes = std::map<EqualTimeKey, nlohmann::json>;
 
-nlohmann::json summarize(const std::vector<nlohmann::json>& records, double confidence) {
+// The summary of the runs of one convergence group at one budget.
+nlohmann::json budgetSummary(double budget, const std::vector<const ConvergenceRun*>& runs) {
+  std::vector<double> e, t, c, s, eff, var;
+  for (const ConvergenceRun* r : runs) {
+    e.push_back(r->relMse);
+    t.push_back(r->wallSeconds);
+    c.push_back(r->cpuSeconds);
+    s.push_back(r->spp);
+    var.push_back(r->relVariance);
+    eff.push_back(1.0 / (r->relMse * r->wallSeconds));
+  }
+  return {{"budget", budget},
+          {"mean_rel_mse", mean(e)},
+          {"rel_mse_std_error", number(standardError(e))},
+          {"mean_wall_seconds", mean(t)},
+          {"wall_seconds_std_error", number(standardError(t))},
+          {"mean_spp", mean(s)},
+          {"runs", runs.size()},
+          {"median_rel_mse", median(e)},
+          {"median_rel_variance", median(var)},
+          {"median_wall_seconds", median(t)},
+          {"median_cpu_seconds", median(c)},
+          {"median_spp", median(s)},
+          {"median_efficiency", median(eff)}};
+}
+
+// The summary of one convergence group (runs of one scene, resolution, integrator, max
+// bounces, threads and budget type): its fits, time to accuracy, efficiency and budgets.
+nlohmann::json convergenceGroup(const std::vector<const ConvergenceRun*>& runs, double confidence) {
+  const ConvergenceRun& first = *runs.front();
+  std::vector<double> time, spp, err;
+  std::map<double, std::vector<const ConvergenceRun*>> byBudget;
+  for (const ConvergenceRun* r : runs) {
+    time.push_back(r->wallSeconds);
+    spp.push_back(r->spp);
+    err.push_back(r->relMse);
+    byBudget[r->budget].push_back(r);
+  }
+  nlohmann::json budgets = nlohmann::json::array();
+  std::vector<double> meanSpp, meanErr, meanTime;
+  for (const auto& [budget, rs] : byBudget) {
+    budgets.push_back(budgetSummary(budget, rs));
+    meanSpp.push_back(budgets.back()["mean_spp"].get<double>());
+    meanErr.push_back(budgets.back()["mean_rel_mse"].get<double>());
+    meanTime.push_back(budgets.back()["mean_wall_seconds"].get<double>());
+  }
+  // With one budget, the spread of times is noise, not cost: no slope.
+  if (byBudget.size() < 2)
+    time.clear(), spp.clear(), err.clear(), meanSpp.clear(), meanTime.clear();
+  const LineFit timeOfMeans = fitLogLog(meanTime, meanErr, confidence);
+  nlohmann::json accuracy = nlohmann::json::array();
+  for (double target : kAccuracyTargets)
+    accuracy.push_back(timeToAccuracy(timeOfMeans, meanErr, target));
+  return {{"scene", first.scene},
+          {"width", first.width},
+          {"height", first.height},
+          {"integrator", first.integrator},
+          {"max_bounces", first.maxBounces},
+          {"threads", first.threads},
+          {"budget_type", first.budgetType},
+          {"runs", runs.size()},
+          {"rel_mse_epsilon", first.relMseEpsilon},
+          {"reference_rel_mse", first.referenceRelMse},
+          {"fit_time", fitJson(fitLogLog(time, err, confidence))},
+          {"fit_spp", fitJson(fitLogLog(spp, err, confidence))},
+          {"fit_spp_of_means", fitJson(fitLogLog(meanSpp, meanErr, confidence))},
+          {"fit_time_of_means", fitJson(timeOfMeans)},
+          {"time_to_accuracy", accuracy},
+          {"efficiency", budgets.back()["median_efficiency"].get<double>()},
+          {"budgets", budgets}};
+}
+
+// The convergence runs grouped by (scene, resolution, integrator, max bounces, threads,
+// budget type), in the order of those keys.
+std::vector<std::vector<const ConvergenceRun*>> convergenceGroups(
+    const std::vector<ConvergenceRun>& runs) {
   using GroupKey = std::tuple<std::string, int, int, std::string, int, int, std::string>;
-  std::map<GroupKey, std::vector<const nlohmann::json*>> groups;
-  using SpeedKey = std::tuple<std::string, int, int, std::string, int, int>;
-  std::map<SpeedKey, std::map<int, std::vector<double>>> speed, speedCpu;
-  for (const nlohmann::json& r : records) {
-    const std::string study = r.value("study", "");
-    if (study == "convergence")
-      groups[{r.value("scene", ""), r.value("width", 0), r.value("height", 0),
-              r.value("integrator", ""), r.value("max_bounces", 0), r.value("threads", 0),
-              r.value("budget_type", "")}]
-          .push_back(&r);
-    else if (study == "speedup") {
-      const SpeedKey key{r.value("scene", ""),      r.value("width", 0),       r.value("height", 0),
-                         r.value("integrator", ""), r.value("max_bounces", 0), r.value("spp", 0)};
-      speed[key][r.value("threads", 0)].push_back(r.value("wall_seconds", 0.0));
-      speedCpu[key][r.value("threads", 0)].push_back(r.value("cpu_seconds", 0.0));
-    }
-  }
+  std::map<GroupKey, std::vector<const ConvergenceRun*>> groups;
+  for (const ConvergenceRun& r : runs)
+    groups[{r.scene, r.width, r.height, r.integrator, r.maxBounces, r.threads, r.budgetType}]
+        .push_back(&r);
+  std::vector<std::vector<const ConvergenceRun*>> out;
+  for (auto& [key, members] : groups) out.push_back(std::move(members));
+  return out;
+}
 
-  nlohmann::json out = {
-      {"convergence", nlohmann::json::array()}, {"best", nlohmann::json::array()},
-      {"speedup", nlohmann::json::array()},     {"strategies", nlohmann::json::array()},
-      {"equal_time", nlohmann::json::array()},  {"confidence", confidence}};
-  // (scene, w, h, threads, seconds) -> integrator -> that budget's summary
-  std::map<std::tuple<std::string, int, int, int, double>, nlohmann::json> equalTime;
-  // (scene, w, h, budget type, threads) -> integrator -> efficiency
-  std::map<std::tuple<std::string, int, int, std::string, int>, std::map<std::string, double>>
-      efficiencies;
-  for (const auto& [key, runs] : groups) {
-    const auto& [scene, w, h, integrator, maxBounces, threads, budgetType] = key;
-    std::vector<double> time, spp, err;
-    std::map<double, std::vector<const nlohmann::json*>> byBudget;
-    for (const nlohmann::json* r : runs) {
-      time.push_back(r->value("wall_seconds", 0.0));
-      spp.push_back(r->value("spp", 0));
-      err.push_back(r->value("rel_mse", 0.0));
-      byBudget[r->value("budget", 0.0)].push_back(r);
-    }
-    nlohmann::json budgets = nlohmann::json::array();
-    std::vector<double> meanSpp, meanErr, meanTime;
-    for (const auto& [budget, rs] : byBudget) {
-      std::vector<double> e, t, c, s, eff, var;
-      for (const nlohmann::json* r : rs) {
-        e.push_back(r->value("rel_mse", 0.0));
-        t.push_back(r->value("wall_seconds", 0.0));
-        c.push_back(r->value("cpu_seconds", 0.0));
-        s.push_back(r->value("spp", 0));
-        var.push_back(r->value("rel_variance", 0.0));
-        eff.push_back(1.0 / (r->value("rel_mse", 0.0) * r->value("wall_seconds", 0.0)));
-      }
-      meanSpp.push_back(mean(s));
-      meanErr.push_back(mean(e));
-      meanTime.push_back(mean(t));
-      budgets.push_back({{"budget", budget},
-                         {"mean_rel_mse", mean(e)},
-                         {"rel_mse_std_error", number(standardError(e))},
-                         {"mean_wall_seconds", mean(t)},
-                         {"wall_seconds_std_error", number(standardError(t))},
-                         {"mean_spp", mean(s)},
-                         {"runs", rs.size()},
-                         {"median_rel_mse", median(e)},
-                         {"median_rel_variance", median(var)},
-                         {"median_wall_seconds", median(t)},
-                         {"median_cpu_seconds", median(c)},
-                         {"median_spp", median(s)},
-                         {"median_efficiency", median(eff)}});
-    }
-    const double efficiency = budgets.back()["median_efficiency"].get<double>();
-    // With one budget, the spread of times is noise, not cost: no slope.
-    if (byBudget.size() < 2)
-      time.clear(), spp.clear(), err.clear(), meanSpp.clear(), meanTime.clear();
-    const LineFit timeOfMeans = fitLogLog(meanTime, meanErr, confidence);
-    nlohmann::json accuracy = nlohmann::json::array();
-    for (double target : kAccuracyTargets)
-      accuracy.push_back(timeToAccuracy(timeOfMeans, meanErr, target));
-    efficiencies[{scene, w, h, budgetType, threads}][integrator] = efficiency;
-    if (budgetType == "time")
-      for (const nlohmann::json& b : budgets)
-        equalTime[{scene, w, h, threads, b["budget"].get<double>()}][integrator] = {
-            {"mean_rel_mse", b["mean_rel_mse"]},
-            {"rel_mse_std_error", b["rel_mse_std_error"]},
-            {"mean_spp", b["mean_spp"]},
-            {"runs", b["runs"]}};
-    const nlohmann::json* first = runs.front();
-    out["convergence"].push_back(
-        {{"scene", scene},
-         {"width", w},
-         {"height", h},
-         {"integrator", integrator},
-         {"max_bounces", maxBounces},
-         {"threads", threads},
-         {"budget_type", budgetType},
-         {"runs", runs.size()},
-         {"rel_mse_epsilon", first->value("rel_mse_epsilon", 0.0)},
-         {"reference_rel_mse", first->value("reference_rel_mse", 0.0)},
-         {"fit_time", fitJson(fitLogLog(time, err, confidence))},
-         {"fit_spp", fitJson(fitLogLog(spp, err, confidence))},
-         {"fit_spp_of_means", fitJson(fitLogLog(meanSpp, meanErr, confidence))},
-         {"fit_time_of_means", fitJson(timeOfMeans)},
-         {"time_to_accuracy", accuracy},
-         {"efficiency", efficiency},
-         {"budgets", budgets}});
-  }
+// Per (scene, resolution, budget type, threads): the most efficient integrator and its ratio
+// to every other.
+nlohmann::json bestEntries(const Efficiencies& efficiencies) {
+  nlohmann::json out = nlohmann::json::array();
   for (const auto& [key, effs] : efficiencies) {
     const auto& [scene, w, h, budgetType, threads] = key;
     std::string best;
@@ -199,24 +193,43 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
       if (e > bestEff) bestEff = e, best = name;
     nlohmann::json ratios = nlohmann::json::object();
     for (const auto& [name, e] : effs) ratios[name] = bestEff / e;
-    out["best"].push_back({{"scene", scene},
-                           {"width", w},
-                           {"height", h},
-                           {"budget_type", budgetType},
-                           {"threads", threads},
-                           {"integrator", best},
-                           {"efficiency", bestEff},
-                           {"times_better_than", ratios}});
+    out.push_back({{"scene", scene},
+                   {"width", w},
+                   {"height", h},
+                   {"budget_type", budgetType},
+                   {"threads", threads},
+                   {"integrator", best},
+                   {"efficiency", bestEff},
+                   {"times_better_than", ratios}});
   }
+  return out;
+}
+
+nlohmann::json equalTimeEntries(const EqualTimes& equalTime) {
+  nlohmann::json out = nlohmann::json::array();
   for (const auto& [key, byIntegrator] : equalTime) {
     const auto& [scene, w, h, threads, seconds] = key;
-    out["equal_time"].push_back({{"scene", scene},
-                                 {"width", w},
-                                 {"height", h},
-                                 {"threads", threads},
-                                 {"seconds", seconds},
-                                 {"integrators", byIntegrator}});
+    out.push_back({{"scene", scene},
+                   {"width", w},
+                   {"height", h},
+                   {"threads", threads},
+                   {"seconds", seconds},
+                   {"integrators", byIntegrator}});
   }
+  return out;
+}
+
+// Per (scene, resolution, integrator, max bounces, spp) and thread count: the median wall time
+// and the speed-up over the fewest threads measured.
+nlohmann::json speedupEntries(const std::vector<SpeedupRun>& runs) {
+  using SpeedKey = std::tuple<std::string, int, int, std::string, int, int>;
+  std::map<SpeedKey, std::map<int, std::vector<double>>> speed, speedCpu;
+  for (const SpeedupRun& r : runs) {
+    const SpeedKey key{r.scene, r.width, r.height, r.integrator, r.maxBounces, r.spp};
+    speed[key][r.threads].push_back(r.wallSeconds);
+    speedCpu[key][r.threads].push_back(r.cpuSeconds);
+  }
+  nlohmann::json out = nlohmann::json::array();
   for (const auto& [key, byThreads] : speed) {
     const auto& [scene, w, h, integrator, maxBounces, spp] = key;
     const int fewest = byThreads.begin()->first;
@@ -227,61 +240,99 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& records, double conf
       // CPU seconds per wall second: how many cores the render really had. On a loaded
       // machine it stays under the thread count, and so does the speed-up.
       const double coresUsed = median(speedCpu[key][threads]) / std::max(m, 1e-12);
-      out["speedup"].push_back({{"scene", scene},
-                                {"width", w},
-                                {"height", h},
-                                {"integrator", integrator},
-                                {"max_bounces", maxBounces},
-                                {"spp", spp},
-                                {"threads", threads},
-                                {"baseline_threads", fewest},
-                                {"repeats", times.size()},
-                                {"median_wall_seconds", m},
-                                {"speedup", s},
-                                {"cores_used", coresUsed},
-                                {"parallel_efficiency", s * fewest / std::max(threads, 1)}});
+      out.push_back({{"scene", scene},
+                     {"width", w},
+                     {"height", h},
+                     {"integrator", integrator},
+                     {"max_bounces", maxBounces},
+                     {"spp", spp},
+                     {"threads", threads},
+                     {"baseline_threads", fewest},
+                     {"repeats", times.size()},
+                     {"median_wall_seconds", m},
+                     {"speedup", s},
+                     {"cores_used", coresUsed},
+                     {"parallel_efficiency", s * fewest / std::max(threads, 1)}});
     }
-  }
-  // One strategies record per scene, resolution and max bounces: the one of most samples
-  // (of the lowest run), whose shares are the least noisy.
-  std::map<std::string, const nlohmann::json*> shareRecords;
-  for (const nlohmann::json& r : records) {
-    if (r.value("study", "") != "strategies" || !r.contains("strategies")) continue;
-    const std::string key = fmt::format("{}|{}x{}|{}", r.value("scene", ""), r.value("width", 0),
-                                        r.value("height", 0), r.value("max_bounces", 0));
-    const nlohmann::json*& kept = shareRecords[key];
-    if (!kept || r.value("spp", 0) > kept->value("spp", 0) ||
-        (r.value("spp", 0) == kept->value("spp", 0) && r.value("run", 0) < kept->value("run", 0)))
-      kept = &r;
-  }
-  for (const auto& [key, record] : shareRecords) {
-    const nlohmann::json& r = *record;
-    std::vector<nlohmann::json> ranked(r["strategies"].begin(), r["strategies"].end());
-    std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) {
-      return a.value("share", 0.0) > b.value("share", 0.0);
-    });
-    // The fewest strategies that together make kCarriedShare of the image carry it.
-    nlohmann::json carrying = nlohmann::json::array();
-    double carried = 0;
-    for (const nlohmann::json& st : ranked) {
-      if (carried >= kCarriedShare) break;
-      carried += st.value("share", 0.0);
-      carrying.push_back(st);
-    }
-    nlohmann::json entry = {{"scene", r.value("scene", "")},
-                            {"width", r.value("width", 0)},
-                            {"height", r.value("height", 0)},
-                            {"max_bounces", r.value("max_bounces", 0)},
-                            {"spp", r.value("spp", 0)},
-                            {"carried_share_target", kCarriedShare},
-                            {"carried_share", carried},
-                            {"carrying", carrying},
-                            {"ranked", ranked}};
-    if (r.contains("share_beyond_max_bounces"))
-      entry["share_beyond_max_bounces"] = r["share_beyond_max_bounces"];
-    out["strategies"].push_back(entry);
   }
   return out;
+}
+
+// One strategies record's strategies ranked by share, and the fewest that carry
+// kCarriedShare of the image.
+nlohmann::json strategiesEntry(const StrategiesRun& r) {
+  std::vector<const StrategyShare*> ranked;
+  for (const StrategyShare& st : r.strategies) ranked.push_back(&st);
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const auto* a, const auto* b) { return a->share > b->share; });
+  nlohmann::json carrying = nlohmann::json::array(), rankedFields = nlohmann::json::array();
+  double carried = 0;
+  for (const StrategyShare* st : ranked) {
+    rankedFields.push_back(st->fields);
+    if (carried >= kCarriedShare) continue;
+    carried += st->share;
+    carrying.push_back(st->fields);
+  }
+  nlohmann::json entry = {{"scene", r.scene},
+                          {"width", r.width},
+                          {"height", r.height},
+                          {"max_bounces", r.maxBounces},
+                          {"spp", r.spp},
+                          {"carried_share_target", kCarriedShare},
+                          {"carried_share", carried},
+                          {"carrying", carrying},
+                          {"ranked", rankedFields}};
+  if (r.shareBeyondMaxBounces) entry["share_beyond_max_bounces"] = *r.shareBeyondMaxBounces;
+  return entry;
+}
+
+// One strategies record per scene, resolution and max bounces: the one of most samples (of
+// the lowest run), whose shares are the least noisy.
+nlohmann::json strategiesEntries(const std::vector<StrategiesRun>& runs) {
+  std::map<std::string, const StrategiesRun*> kept;
+  for (const StrategiesRun& r : runs) {
+    const std::string key = fmt::format("{}|{}x{}|{}", r.scene, r.width, r.height, r.maxBounces);
+    const StrategiesRun*& k = kept[key];
+    if (!k || r.spp > k->spp || (r.spp == k->spp && r.run < k->run)) k = &r;
+  }
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& [key, r] : kept) out.push_back(strategiesEntry(*r));
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json summarize(const SummaryRecords& records, double confidence) {
+  nlohmann::json convergence = nlohmann::json::array();
+  Efficiencies efficiencies;
+  EqualTimes equalTime;
+  for (const std::vector<const ConvergenceRun*>& runs : convergenceGroups(records.convergence)) {
+    nlohmann::json g = convergenceGroup(runs, confidence);
+    const ConvergenceRun& r = *runs.front();
+    efficiencies[{r.scene, r.width, r.height, r.budgetType, r.threads}][r.integrator] =
+        g["efficiency"].get<double>();
+    if (r.budgetType == "time")
+      for (const nlohmann::json& b : g["budgets"])
+        equalTime[{r.scene, r.width, r.height, r.threads, b["budget"].get<double>()}]
+                 [r.integrator] = {{"mean_rel_mse", b["mean_rel_mse"]},
+                                   {"rel_mse_std_error", b["rel_mse_std_error"]},
+                                   {"mean_spp", b["mean_spp"]},
+                                   {"runs", b["runs"]}};
+    convergence.push_back(std::move(g));
+  }
+  return {{"convergence", convergence},
+          {"best", bestEntries(efficiencies)},
+          {"speedup", speedupEntries(records.speedup)},
+          {"strategies", strategiesEntries(records.strategies)},
+          {"equal_time", equalTimeEntries(equalTime)},
+          {"confidence", confidence}};
+}
+
+nlohmann::json summarize(const std::vector<nlohmann::json>& records, const std::string& file,
+                         double confidence) {
+  SummaryRecords typed;
+  addSummaryRecords(records, file, typed);
+  return summarize(typed, confidence);
 }
 
 std::string summaryText(const nlohmann::json& summary) {

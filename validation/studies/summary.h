@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "validation/studies/summary_records.h"
+
 namespace verity::studies {
 
 // Groups "convergence" records by (scene, resolution, integrator, max bounces, threads, budget
@@ -31,7 +33,11 @@ inline constexpr double kCarriedShare = 0.9;
 // interval of that time at the summary's confidence. "equal_time": per (scene, resolution,
 // threads, time budget), every integrator's mean relMSE and its standard error.
 inline constexpr double kAccuracyTargets[] = {1e-2, 1e-3};
-nlohmann::json summarize(const std::vector<nlohmann::json>& records, double confidence = 0.95);
+nlohmann::json summarize(const SummaryRecords& records, double confidence = 0.95);
+// The same of the records read from `file` (summary_records.h: a record that lacks a key the
+// summary reads is an error naming `file`, the record and the key).
+nlohmann::json summarize(const std::vector<nlohmann::json>& records, const std::string& file,
+                         double confidence = 0.95);
 
 // The summary as text tables (what `verity study` prints and the Markdown report shows).
 std::string summaryText(const nlohmann::json& summary);

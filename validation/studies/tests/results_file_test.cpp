@@ -1,4 +1,4 @@
-// Results files with corrupt records (issue 26, item 9): a line that is not a JSON object is
+// Results files with corrupt records: a line that is not a JSON object is
 // an error naming the file and the line, wherever it is; a last line cut off mid-write
 // (no newline) is an error for readers, and a resumed study removes it, says so, and redoes
 // that run.

@@ -2,10 +2,14 @@
 // whose relative MSE follows a known law.
 #include "validation/studies/summary.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
+
+#include "core/error.h"
+#include "testing/error_of.h"
 
 namespace verity::studies {
 namespace {
@@ -26,7 +30,9 @@ nlohmann::json run(const std::string& integrator, double budget, double seconds,
           {"wall_seconds", seconds},
           {"cpu_seconds", 2 * seconds},
           {"rel_mse", relMse},
-          {"rel_variance", relMse}};
+          {"rel_variance", relMse},
+          {"rel_mse_epsilon", 0.01},
+          {"reference_rel_mse", 1e-6}};
 }
 
 const nlohmann::json& group(const nlohmann::json& summary, const std::string& integrator) {
@@ -49,7 +55,7 @@ std::vector<nlohmann::json> records() {
 }
 
 TEST(StudySummary, TimeToAccuracyFollowsTheFittedLaw) {
-  const nlohmann::json summary = summarize(records());
+  const nlohmann::json summary = summarize(records(), "runs.jsonl");
   const nlohmann::json& fast = group(summary, "fast")["time_to_accuracy"];
   ASSERT_EQ(fast.size(), 2u);
   EXPECT_EQ(fast[0]["target_rel_mse"], 1e-2);
@@ -70,13 +76,13 @@ TEST(StudySummary, TargetsAboveEveryErrorAreReachedBeforeTheSmallestBudget) {
   std::vector<nlohmann::json> rs;
   for (double t : {1.0, 2.0, 4.0})
     for (int r = 0; r < 3; ++r) rs.push_back(run("fast", t, t, 1e-4 / t * (1 + 0.01 * r), r));
-  const nlohmann::json summary = summarize(rs);
+  const nlohmann::json summary = summarize(rs, "runs.jsonl");
   const nlohmann::json& g = group(summary, "fast");
   EXPECT_EQ(g["time_to_accuracy"][0]["status"], "before the smallest budget");
 }
 
 TEST(StudySummary, EqualTimeComparesEveryIntegratorAtEachBudget) {
-  const nlohmann::json summary = summarize(records());
+  const nlohmann::json summary = summarize(records(), "runs.jsonl");
   ASSERT_EQ(summary["equal_time"].size(), 6u);
   const nlohmann::json& at4 = summary["equal_time"][3];
   EXPECT_EQ(at4["seconds"], 4.0);
@@ -85,6 +91,40 @@ TEST(StudySummary, EqualTimeComparesEveryIntegratorAtEachBudget) {
   EXPECT_NEAR(slow / fast, 10, 1.0);
   EXPECT_EQ(at4["integrators"]["fast"]["runs"], 5);
   EXPECT_GT(at4["integrators"]["fast"]["rel_mse_std_error"].get<double>(), 0);
+}
+
+// A record that lacks a key the summary reads, or spells it wrong, is an error naming the
+// file, the record and the key, not a run of relative MSE 0.
+TEST(StudySummary, AMissingKeyIsAnErrorNamingTheFileRecordAndKey) {
+  for (const char* key : {"rel_mse", "wall_seconds", "budget", "threads", "scene"}) {
+    std::vector<nlohmann::json> rs = records();
+    rs[2].erase(key);
+    EXPECT_EQ(errorOf([&] { summarize(rs, "runs.jsonl"); }),
+              fmt::format("runs.jsonl: record 3, \"{}\": missing key", key));
+  }
+  std::vector<nlohmann::json> misspelled = records();
+  misspelled[4]["relmse"] = misspelled[4]["rel_mse"];
+  misspelled[4].erase("rel_mse");
+  EXPECT_EQ(errorOf([&] { summarize(misspelled, "runs.jsonl"); }),
+            "runs.jsonl: record 5, \"rel_mse\": missing key");
+  std::vector<nlohmann::json> wrongType = records();
+  wrongType[0]["spp"] = "many";
+  EXPECT_EQ(errorOf([&] { summarize(wrongType, "runs.jsonl"); }),
+            "runs.jsonl: record 1, \"spp\": expected an integer, found \"many\"");
+}
+
+TEST(StudySummary, AStrategyWithoutItsShareIsAnError) {
+  nlohmann::json strategies = {
+      {"study", "strategies"},
+      {"scene", "box"},
+      {"width", 8},
+      {"height", 8},
+      {"max_bounces", 3},
+      {"spp", 4},
+      {"run", 0},
+      {"strategies", {{{"s", 0}, {"t", 2}, {"share", 0.7}}, {{"s", 1}, {"t", 1}, {"sahre", 0.3}}}}};
+  EXPECT_EQ(errorOf([&] { summarize(std::vector<nlohmann::json>{strategies}, "shares.jsonl"); }),
+            "shares.jsonl: record 1, \"strategies\"[1], \"share\": missing key");
 }
 
 }  // namespace
