@@ -25,7 +25,12 @@ bool Film::addSample(int x, int y, const Color3& value) {
   sum_[i] += v;
   sumSquares_[i] += v * v;
   ++count_[i];
+  if (!max_.empty()) max_[i] = max_[i].max(v);
   return true;
+}
+
+void Film::trackMaxima() {
+  if (max_.empty()) max_.assign(sum_.size(), Eigen::Array3d::Zero());
 }
 
 void Film::addZeroSamples(uint32_t n) {
@@ -38,6 +43,7 @@ void Film::add(const Film& other) {
     sumSquares_[i] += other.sumSquares_[i];
     count_[i] += other.count_[i];
     invalid_[i] += other.invalid_[i];
+    if (!max_.empty() && !other.max_.empty()) max_[i] = max_[i].max(other.max_[i]);
   }
 }
 
@@ -46,6 +52,7 @@ void Film::clear() {
   std::fill(sumSquares_.begin(), sumSquares_.end(), Eigen::Array3d::Zero());
   std::fill(count_.begin(), count_.end(), 0u);
   std::fill(invalid_.begin(), invalid_.end(), 0u);
+  std::fill(max_.begin(), max_.end(), Eigen::Array3d::Zero());
 }
 
 Color3 Film::mean(int x, int y) const {

@@ -1,6 +1,7 @@
 // Per-pixel accumulation of samples in double precision: sum, sum of squares and count, so
 // that the mean and its variance can be written. Non-finite samples are counted and left
-// out, never averaged in.
+// out, never averaged in. On request it also keeps each pixel's largest sample per channel,
+// which shows fireflies: a single sample far above the pixel's value.
 #pragma once
 
 #include <span>
@@ -24,6 +25,13 @@ class Film {
   void add(const Film& other);
   // Back to no samples at all.
   void clear();
+  // From now on keep each pixel's largest valid sample per channel (off by default: it costs
+  // a comparison per sample and a fourth accumulator). Films moved between processes do not
+  // carry it.
+  void trackMaxima();
+  bool tracksMaxima() const { return !max_.empty(); }
+  // The largest valid sample per channel since tracking began (zero where there is none).
+  Color3 maxSample(int x, int y) const { return max_[index(x, y)].cast<float>(); }
 
   const Vector2i& resolution() const { return resolution_; }
   int width() const { return resolution_.x(); }
@@ -51,6 +59,7 @@ class Film {
 
   Vector2i resolution_;
   std::vector<Eigen::Array3d> sum_, sumSquares_;
+  std::vector<Eigen::Array3d> max_;  // empty unless trackMaxima() was called
   std::vector<uint32_t> count_, invalid_;
 };
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "core/error.h"
 
@@ -13,19 +14,28 @@ namespace {
 const std::vector<float>& plane(const ImageChannels& image, const std::string& name) {
   const auto it = image.planes.find(name);
   if (it == image.planes.end())
-    throw VerityError("", "", "the reference has no channel \"" + name + "\"");
+    throw std::logic_error("a reference without a channel \"" + name + "\" (readReference)");
   return it->second;
 }
 
 void checkSize(const Film& film, const ImageChannels& reference) {
   if (film.width() != reference.width || film.height() != reference.height)
-    throw VerityError("", "",
-                      fmt::format("the image is {}×{} but the reference is {}×{} (use the "
-                                  "reference's resolution, or --resolution)",
-                                  film.width(), film.height(), reference.width, reference.height));
+    throw std::logic_error(fmt::format("an image of {}×{} against a reference of {}×{}",
+                                       film.width(), film.height(), reference.width,
+                                       reference.height));
 }
 
 }  // namespace
+
+ImageChannels readReference(const std::filesystem::path& file) {
+  ImageChannels image = readExr(file);
+  for (const char* name : {"R", "G", "B"})
+    if (!image.planes.count(name))
+      throw VerityError(
+          file.string(), "",
+          fmt::format("a reference image needs channels R, G and B; it has no {}", name));
+  return image;
+}
 
 ErrorStats compareToReference(const Film& film, const ImageChannels& reference) {
   checkSize(film, reference);
@@ -58,6 +68,39 @@ ErrorStats compareToReference(const Film& film, const ImageChannels& reference) 
   s.relMse = sumRel / terms;
   s.meanVariance = sumVar / terms;
   s.relVariance = sumRelVar / terms;
+  return s;
+}
+
+FireflyShare fireflyShare(const Film& film, const ImageChannels& reference, double k) {
+  checkSize(film, reference);
+  if (!film.tracksMaxima())
+    throw std::logic_error("fireflies need the film's per-pixel maxima (Film::trackMaxima)");
+  const std::vector<float>* ref[3] = {&plane(reference, "R"), &plane(reference, "G"),
+                                      &plane(reference, "B")};
+  FireflyShare s;
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const size_t i = size_t(y) * film.width() + x;
+      const uint32_t n = film.count(x, y);
+      bool finite = n > 0;
+      for (int c = 0; c < 3; ++c) finite = finite && std::isfinite((*ref[c])[i]);
+      if (!finite) continue;
+      const Color3 mean = film.mean(x, y), largest = film.maxSample(x, y);
+      double error = 0;
+      bool far = false;
+      for (int c = 0; c < 3; ++c) {
+        const double r = (*ref[c])[i];
+        const double scale = std::sqrt(r * r + kRelEpsilon);
+        const double d = double(mean[c]) - r;
+        error += d * d / (scale * scale);
+        far = far || (double(largest[c]) - r) / n > k * scale;
+      }
+      s.allRelMseSum += error;
+      if (far) {
+        ++s.pixels;
+        s.relMseSum += error;
+      }
+    }
   return s;
 }
 

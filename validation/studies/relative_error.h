@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -13,7 +14,8 @@ namespace verity::studies {
 // The ε in the denominator of the relative squared error (x − r)² / (r² + ε), the relative
 // MSE of the adaptive-sampling literature (Rousselle, Knaus and Zwicker 2011, "Adaptive
 // Sampling and Reconstruction using Greedy Error Minimization"): it keeps black and
-// near-black pixels from dominating the mean. Issue 6 fixes ε = 1e-2.
+// near-black pixels from dominating the mean. Every study uses ε = 1e-2, so that their relative
+// MSEs compare.
 inline constexpr double kRelEpsilon = 1e-2;
 
 // Errors of an image against a reference of the same size (means in planes R, G, B).
@@ -23,7 +25,23 @@ struct ErrorStats {
   double relVariance = 0;   // mean of that variance / (r² + ε): relMse's expectation if unbiased
   size_t pixelsUsed = 0;    // pixels with a finite reference and at least one sample
 };
+// Reads a reference image (an EXR with planes R, G and B), or throws VerityError naming `file`.
+ImageChannels readReference(const std::filesystem::path& file);
+// `reference` holds planes R, G and B (readReference) and is as large as `film`.
 ErrorStats compareToReference(const Film& film, const ImageChannels& reference);
+// Fireflies: pixels whose error comes from one sample far above the reference. A pixel of n
+// samples holds a far sample when, in some channel, its largest sample m exceeds the reference
+// r by so much that this sample alone moves the pixel mean by more than `k` units of the
+// relative error: (m − r) / n > k·sqrt(r² + ε). With k = 1 that one sample alone gives the
+// pixel a relative squared error of at least 1.
+struct FireflyShare {
+  size_t pixels = 0;        // pixels holding a far sample
+  double relMseSum = 0;     // their (x − r)² / (r² + ε), summed over channels
+  double allRelMseSum = 0;  // the same over every pixel compareToReference uses
+  double share() const { return allRelMseSum > 0 ? relMseSum / allRelMseSum : 0; }
+};
+// `film` must keep its maxima (Film::trackMaxima before rendering).
+FireflyShare fireflyShare(const Film& film, const ImageChannels& reference, double k = 1);
 // Per pixel sqrt(mean over channels of (x − r)² / (r² + ε)), row 0 at the top.
 std::vector<float> relativeErrorImage(const Film& film, const ImageChannels& reference);
 // The reference's own estimated relative MSE: mean of (variance / samples) / (r² + ε).

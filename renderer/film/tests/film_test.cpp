@@ -22,6 +22,26 @@ TEST(Film, NonFiniteSamplesAreCountedAndExcluded) {
   EXPECT_TRUE(film.mean(1, 0).isZero());
 }
 
+TEST(Film, MaximaArePerChannelSkipInvalidSamplesAndMerge) {
+  Film film(Vector2i(2, 1));
+  film.addSample(0, 0, Color3(9, 9, 9));  // before tracking: not seen
+  film.trackMaxima();
+  film.addSample(0, 0, Color3(1, 5, 2));
+  film.addSample(0, 0, Color3(4, 3, 2));
+  film.addSample(0, 0, Color3(kInfinity, 0, 0));
+  EXPECT_TRUE((film.maxSample(0, 0) == Color3(4, 5, 2)).all());
+  EXPECT_TRUE(film.maxSample(1, 0).isZero());
+  Film other(Vector2i(2, 1));
+  other.trackMaxima();
+  other.addSample(0, 0, Color3(0, 7, 0));
+  other.addSample(1, 0, Color3(3, 0, 1));
+  film.add(other);
+  EXPECT_TRUE((film.maxSample(0, 0) == Color3(4, 7, 2)).all());
+  EXPECT_TRUE((film.maxSample(1, 0) == Color3(3, 0, 1)).all());
+  film.clear();
+  EXPECT_TRUE(film.maxSample(0, 0).isZero());
+}
+
 TEST(ImageIo, ExrRoundTripKeepsChannelsAndAttributes) {
   Film film(Vector2i(3, 2));
   for (int y = 0; y < 2; ++y)
