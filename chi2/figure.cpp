@@ -1,17 +1,13 @@
 #include "chi2/figure.h"
 
 #include <fmt/format.h>
-#include <spawn.h>
-#include <sys/wait.h>
 
-#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <vector>
 
 #include "core/error.h"
-
-extern char** environ;
+#include "core/program_files.h"
 
 namespace verity::chi2 {
 
@@ -50,20 +46,6 @@ nlohmann::json rows(const std::vector<T>& cells, const Domain& d) {
   for (int j = 0; j < d.ny; ++j)
     out.push_back(std::vector<T>(cells.begin() + j * d.nx, cells.begin() + (j + 1) * d.nx));
   return out;
-}
-
-// Runs `args` (no shell, so no quoting) and returns its exit status, or −1 if it could not
-// be started or was killed.
-int runProgram(std::vector<std::string> args) {
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid;
-  if (posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return -1;
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) return -1;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 }  // namespace
@@ -114,17 +96,19 @@ std::string writeFigure(const TestResult& result, const std::string& prefix) {
       throw VerityError(data, "", "cannot write the chi-square histogram");
   }
   // The figure is a convenience, but a missing one is an error rather than a silent gap.
-  if (!std::filesystem::exists(VERITY_PYTHON))
-    throw VerityError(data, "",
-                      "cannot draw the chi-square figure: " VERITY_PYTHON
-                      " is missing (Debian: apt-get install python3-matplotlib); the histogram "
-                      "is in this file");
-  const int status = runProgram({VERITY_PYTHON, VERITY_CHI2_PLOT_SCRIPT, data, png});
+  std::filesystem::path python;
+  try {
+    python = findPythonWith("matplotlib", "draw the chi-square figure");
+  } catch (const VerityError& e) {
+    throw VerityError(data, "", e.problem() + "; the histogram is in this file");
+  }
+  const std::filesystem::path script = sharedProgramFile("plot_chi2.py");
+  const int status = runProgram({python.string(), script.string(), data, png});
   if (status != 0)
     throw VerityError(data, "",
                       fmt::format("cannot draw the chi-square figure: {} {} failed (exit status "
                                   "{}); the histogram is in this file",
-                                  VERITY_PYTHON, VERITY_CHI2_PLOT_SCRIPT, status));
+                                  python.string(), script.string(), status));
   return png;
 }
 

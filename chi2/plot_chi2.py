@@ -2,7 +2,7 @@
 """The figure of one chi-square sampling test, drawn from the JSON written by
 chi2/figure.cpp (`verity chi2 -o PREFIX`, and the suite for every failing configuration):
 
-    /usr/bin/python3 chi2/plot_chi2.py PREFIX.json PREFIX.png
+    python3 chi2/plot_chi2.py PREFIX.json PREFIX.png
 
 Three panels: observed and expected counts per cell on ONE logarithmic colour scale (a
 peaked lobe such as GGX with alpha 0.1 spans five decades, which a linear scale shows as a
