@@ -13,23 +13,13 @@
 #include "validation/studies/reference_command.h"
 #include "validation/studies/report_command.h"
 #include "validation/studies/study_command.h"
+#include "version.h"
 
 namespace {
 
-// Commands that do not split their work over MPI ranks refuse to run N times side by side.
-void refuseUnderMpi(CLI::App& app, const verity::ProcessGroup& group) {
-  for (CLI::App* command : app.get_subcommands({}))
-    if (command->get_name() != "render" && command->get_name() != "reference" &&
-        command->get_name() != "study")
-      command->preparse_callback([command, &group](size_t) {
-        if (group.distributed())
-          throw verity::VerityError(
-              "", "",
-              fmt::format("`verity {}` runs in one process; only render, reference and "
-                          "study split their work over MPI ranks",
-                          command->get_name()));
-      });
-}
+// The exit status of a command line that cannot be parsed (an unknown option, a value out of
+// range), for every command: the status compare and chi2 give any input they cannot use.
+constexpr int kBadCommandLine = 2;
 
 // An error ends the whole job under MPI: the other ranks would wait for this one forever.
 int fail(const verity::ProcessGroup& group, const std::string& message) {
@@ -48,22 +38,27 @@ int main(int argc, char** argv) {
   // MPI_Init only when mpirun or srun started this process.
   const verity::ProcessGroup group(argc, argv);
   CLI::App app{"Verity: a physically based renderer whose estimators are checked by statistics"};
+  app.set_version_flag("--version",
+                       fmt::format("verity {} (git {})", verity::kVersion, verity::kRevision));
+  // Every command's --help shows its options' defaults; commands inherit this.
+  app.option_defaults()->always_capture_default();
   app.require_subcommand(1);
+  // Each command declares where it is added whether it splits its work over MPI ranks.
   verity::addRenderCommand(app, group);
-  verity::addBenchCommand(app);
-  verity::addCompareCommand(app);
+  verity::addBenchCommand(app, group);
+  verity::addCompareCommand(app, group);
   verity::addReferenceCommand(app, group);
   verity::addStudyCommand(app, group);
-  verity::addReportCommand(app);
-  verity::addChi2Command(app);
-  refuseUnderMpi(app, group);
+  verity::addReportCommand(app, group);
+  verity::addChi2Command(app, group);
   try {
     app.parse(argc, argv);
   } catch (const CLI::RuntimeError& e) {
     // A command's own exit status (130: interrupted), not an error.
     return e.get_exit_code();
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
+    const int shown = app.exit(e);  // prints the help, the version or the error
+    const int code = shown == 0 ? 0 : kBadCommandLine;
     if (code != 0 && group.distributed()) group.abort(code);
     return code;
   } catch (const verity::VerityError& e) {

@@ -8,6 +8,10 @@
 #include "chi2/figure.h"
 #include "chi2/suite.h"
 #include "chi2/suite_significance.h"
+#include "commands/number_options.h"
+#include "commands/output_paths.h"
+#include "commands/seed_option.h"
+#include "commands/subcommand.h"
 
 namespace verity {
 
@@ -74,6 +78,7 @@ int runOne(const Chi2Args& a) {
     std::cout << fmt::format("  {} delta-lobe samples (not histogrammed)\n",
                              subject.deltaSamples());
   if (!a.output.empty()) {
+    prepareOutputFile(a.output + ".json", "-o");
     const std::string figure = chi2::writeFigure(r, a.output);
     std::cout << "  wrote " << figure << " (histogram in " << a.output << ".json)\n";
   }
@@ -131,23 +136,31 @@ int seedTable(const Chi2Args& a) {
 
 }  // namespace
 
-void addChi2Command(CLI::App& app) {
+void addChi2Command(CLI::App& app, const ProcessGroup& group) {
   auto args = std::make_shared<Chi2Args>();
-  CLI::App* cmd = app.add_subcommand(
-      "chi2",
+  CLI::App* cmd = addSubcommand(
+      app, "chi2",
       "Chi-square test of one material's sampling (or the seed report's table); exit status 0 "
       "PASSED, 1 FAILED, 2 bad input, 3 INCONCLUSIVE (a check could not run with its stated "
-      "power: the reason is printed)");
+      "power: the reason is printed)",
+      MpiUse::OneProcess, group);
   cmd->add_option("--material", args->material, "the material as JSON, e.g. '{\"type\":\"ggx\"}'");
-  cmd->add_option("--incoming", args->incoming, "incidence angle from +z in degrees")
-      ->check(CLI::Range(0.0, 90.0));
+  cmd->add_option("--incoming", args->incoming, "incidence angle from +z in degrees, 0 to 90")
+      ->check(realNumber(0, true, 90, true));
   cmd->add_option("--normal", args->normal, "shading normal x,y,z (world space)");
   cmd->add_flag("--inside", args->inside, "incident direction from below the surface");
-  cmd->add_option("--samples", args->samples, "number of samples")->check(CLI::PositiveNumber);
-  cmd->add_option("--seed", args->seed, "random seed");
+  cmd->add_option("--samples", args->samples,
+                  fmt::format("number of samples (the suite's sweep draws {} for a warp, {} for "
+                              "a BSDF)",
+                              chi2::suite::kSamples, chi2::suite::kBsdfSamples))
+      ->check(wholeNumber(1, LLONG_MAX));
+  addSeedOption(cmd, args->seed, "random seed, 0 to 2^64 - 1")->default_str("1");
   cmd->add_option("-o,--output", args->output,
-                  "write PREFIX.png, observed and expected counts and (O-E)/sqrt(E) (matplotlib, "
-                  "/usr/bin/python3), and its data PREFIX.json");
+                  "file name prefix: writes PREFIX.png, observed and expected counts and "
+                  "(O-E)/sqrt(E) (drawn with matplotlib by python3 from PATH, else "
+                  "/usr/bin/python3, or $VERITY_PYTHON), and its data "
+                  "PREFIX.json; missing folders are created")
+      ->type_name("PREFIX");
   cmd->add_flag("--seed-table", args->seedTable, "print the seed report's table next to ours");
   cmd->callback([args] {
     if (!args->seedTable && args->material.empty())

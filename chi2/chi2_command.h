@@ -4,8 +4,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include "distributed/process_group.h"
+
 namespace verity {
 
-void addChi2Command(CLI::App& app);
+// Runs in one process.
+void addChi2Command(CLI::App& app, const ProcessGroup& group);
 
 }  // namespace verity

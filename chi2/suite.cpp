@@ -174,7 +174,7 @@ std::vector<BsdfCase> bsdfCases() {
     }
   // The quick subset: every 25th configuration, a fixed stride over all material types.
   for (size_t i = 0; i < v.size(); ++i) v[i].quick = i % 25 == 0;
-  // The extremes of what `verity chi2` accepts (issue 26), appended after the stride so that
+  // The extremes of what `verity chi2` accepts, appended after the stride so that
   // the quick subset stays as it was: exactly grazing incidence (wi.z = cos 90° = 6e-17 in
   // single precision) and 1e-4 from it, for D(m)cos θm sampling, whose reflection Jacobian
   // 1/(4 wi·h) grows without bound as wo nears −wi; the smallest roughness the material

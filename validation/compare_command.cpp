@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
-#include <charconv>
 #include <fstream>
 
+#include "commands/number_options.h"
+#include "commands/output_paths.h"
+#include "commands/subcommand.h"
 #include "core/error.h"
 #include "validation/comparison_report.h"
 #include "validation/distinct_files.h"
@@ -21,26 +23,12 @@ constexpr int kAgree = 0, kDiffer = 1, kBadInput = 2;
 struct CompareArgs {
   std::vector<std::string> images;  // A.exr B.exr
   std::vector<std::string> a, b;    // -a A1.exr ..., -b B1.exr ...
-  // Read as text and parsed here, so that a malformed value is bad input (status 2) like
-  // every other; CLI11's own conversion errors have exit codes of their own.
-  std::string tile = "16";
-  std::string alpha = "0.01";
+  int tile = 16;
+  double alpha = 0.01;
   std::string layer;
   std::string json;
   std::string zImage;
 };
-
-template <typename T>
-T parseNumber(const std::string& text, const char* option, const char* kind) {
-  T value{};
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (ec == std::errc::result_out_of_range)
-    throw VerityError("", option, fmt::format("\"{}\" is out of range for {}", text, kind));
-  if (ec != std::errc() || ptr != end || text.empty())
-    throw VerityError("", option, fmt::format("\"{}\" is not {}", text, kind));
-  return value;
-}
 
 std::vector<std::filesystem::path> paths(const std::vector<std::string>& names) {
   return {names.begin(), names.end()};
@@ -51,12 +39,12 @@ std::pair<std::vector<std::filesystem::path>, std::vector<std::filesystem::path>
     const CompareArgs& args) {
   const bool sets = !args.a.empty() || !args.b.empty();
   if (sets && !args.images.empty())
-    throw VerityError("", "",
+    throw VerityError("", "-a/-b",
                       "give either two images (A.exr B.exr) or the sides with -a and -b, not "
                       "both");
   if (!sets) {
     if (args.images.size() != 2)
-      throw VerityError("", "",
+      throw VerityError("", "images",
                         fmt::format("compare needs two images, A.exr and B.exr, or the sides "
                                     "with -a A1.exr ... -b B1.exr ...; got {} images",
                                     args.images.size()));
@@ -70,8 +58,8 @@ std::pair<std::vector<std::filesystem::path>, std::vector<std::filesystem::path>
 
 int run(const CompareArgs& args) {
   validation::ComparisonOptions options;
-  options.tileSize = parseNumber<int>(args.tile, "--tile", "a whole number of pixels");
-  options.alpha = parseNumber<double>(args.alpha, "--alpha", "a number");
+  options.tileSize = args.tile;
+  options.alpha = args.alpha;
   validation::checkComparisonOptions(options);
   const auto [filesA, filesB] = sideFiles(args);
   std::vector<std::filesystem::path> all = filesA;
@@ -81,6 +69,8 @@ int run(const CompareArgs& args) {
   const auto b = validation::loadSide(filesB, "B", args.layer);
   const validation::ComparisonResult result = validation::compareSides(*a, *b, options);
   fmt::print("{}", validation::comparisonSummary(result));
+  if (!args.json.empty()) prepareOutputFile(args.json, "-o");
+  if (!args.zImage.empty()) prepareOutputFile(args.zImage, "--z-image");
   if (!args.json.empty()) {
     std::ofstream out(args.json);
     out << validation::comparisonJson(result).dump(2) << "\n";
@@ -105,35 +95,35 @@ int runReportingErrors(const CompareArgs& args) {
 
 }  // namespace
 
-void addCompareCommand(CLI::App& app) {
+void addCompareCommand(CLI::App& app, const ProcessGroup& group) {
   auto args = std::make_shared<CompareArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "compare",
+  CLI::App* cmd = addSubcommand(
+      app, "compare",
       "Do two sides estimate the same image? A side is one EXR with variance channels "
       "(verity render --variance) or, with -a/-b, a set of independent renders from any "
       "renderer. Welch t-tests per tile, Holm decision; exit status 0 agree, 1 differ, 2 bad "
-      "input");
+      "input",
+      MpiUse::OneProcess, group);
   cmd->add_option("images", args->images, "A.exr B.exr: two images with variance channels");
   cmd->add_option("-a", args->a,
                   "Side A: one EXR with variance channels, or several independent renders "
                   "(at least 2; the variance from their spread, df = renders - 1)")
       ->type_name("FILE");
   cmd->add_option("-b", args->b, "Side B, like -a")->type_name("FILE");
-  cmd->add_option("--tile", args->tile, "Tile size in pixels, a whole number >= 1 (default 16)")
-      ->type_name("INT");
+  cmd->add_option("--tile", args->tile, "Tile size in pixels")->check(wholeNumber(1));
   cmd->add_option("--alpha", args->alpha,
-                  "Family-wise significance level of the Holm decision, in (0, 1) (default "
-                  "0.01)")
-      ->type_name("FLOAT");
+                  "Family-wise significance level of the Holm decision, above 0 and below 1")
+      ->check(realNumber(0, false, 1, false));
   cmd->add_option("--layer", args->layer,
                   "Read a set's R, G, B from this EXR layer (LAYER.R, LAYER.G, LAYER.B) when "
                   "its files have several")
       ->type_name("NAME");
-  cmd->add_option("-o,--json", args->json, "Also write every tile's test to this JSON file")
+  cmd->add_option("-o,--output", args->json,
+                  "Also write every tile's test to this JSON file (missing folders are created)")
       ->type_name("FILE");
   cmd->add_option("--z-image", args->zImage,
                   "Write a PNG of each tile's z-score (blue: B below A, red: B above; black "
-                  "outline: rejected)")
+                  "outline: rejected; missing folders are created)")
       ->type_name("FILE.png");
   cmd->callback([args] { throw CLI::RuntimeError(runReportingErrors(*args)); });
 }

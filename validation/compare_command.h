@@ -2,13 +2,15 @@
 // sides estimate the same image? A side is one image with variance channels (a Verity EXR
 // rendered with --variance) or a set of independent renders from any renderer. Per-tile Welch
 // t-tests decided by Holm's procedure (validation/image_comparison.h).
-// Exit status 0 when they agree, 1 when they differ, 2 on bad input.
+// Exit status 0 when they agree, 1 when they differ, 2 on bad input. Runs in one process.
 #pragma once
 
 #include <CLI/CLI.hpp>
 
+#include "distributed/process_group.h"
+
 namespace verity {
 
-void addCompareCommand(CLI::App& app);
+void addCompareCommand(CLI::App& app, const ProcessGroup& group);
 
 }  // namespace verity

@@ -22,7 +22,8 @@ bool hasVarianceChannels(const ImageChannels& image) {
 
 std::unique_ptr<ComparisonSide> loadSide(const std::vector<std::filesystem::path>& files,
                                          const std::string& name, const std::string& layer) {
-  if (files.empty()) throw VerityError("", "", fmt::format("side {} has no file", name));
+  if (files.empty())
+    throw VerityError("", "side " + name, "no file given (-a A1.exr ... -b B1.exr ...)");
   if (files.size() > 1) return std::make_unique<RenderSetSide>(RenderSetSide::load(files, layer));
   const std::string file = files.front().string();
   const ImageChannels image = readExr(files.front());

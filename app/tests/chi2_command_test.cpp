@@ -57,12 +57,17 @@ TEST(Chi2Command, OutputWritesTheFigureAndItsData) {
   EXPECT_TRUE(std::filesystem::exists(prefix.string() + ".json"));
 }
 
+// A prefix whose folder cannot be made (a file stands in its way) is refused before the test.
 TEST(Chi2Command, AnUnwritableOutputIsAnError) {
+  const std::filesystem::path dir = testing::freshTestDirectory("verity-chi2-");
+  std::ofstream(dir / "file") << "not a folder";
   const testing::Outcome r =
-      chi2(R"({"type":"lambertian","albedo":0.5})", {"-o", "/nonexistent-directory/figure"});
+      chi2(R"({"type":"lambertian","albedo":0.5})", {"-o", (dir / "file" / "figure").string()});
   EXPECT_NE(r.status, 0);
-  EXPECT_NE(r.stderrText.find("/nonexistent-directory/figure.json"), std::string::npos)
+  EXPECT_NE(r.stderrText.find("-o: cannot create the folder \"" + (dir / "file").string()),
+            std::string::npos)
       << r.stderrText;
+  EXPECT_EQ(r.stderrText.find("PASSED"), std::string::npos) << r.stderrText;
 }
 
 }  // namespace

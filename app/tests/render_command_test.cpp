@@ -1,7 +1,8 @@
 // `verity render` refuses what it cannot honour before it renders: an output it could not
-// write (which would lose the render), an empty output name, variance channels asked of a
-// PNG, a seed outside [0, 2⁶⁴ − 1] and a bounce count beyond the supported limit. And
-// --explain describes the chosen integrator's strategies (issue 26, items 7 and 10).
+// write (which would lose the render; missing folders are created), an empty output name, variance
+// channels asked of a PNG, a seed outside [0, 2⁶⁴ − 1] and a bounce count beyond the supported
+// limit. And
+// --explain describes the chosen integrator's strategies.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -64,20 +65,21 @@ TEST_F(RenderCommand, WritesWhereAsked) {
   EXPECT_FALSE(std::filesystem::exists(dir_ / "image.exr.verity-probe"));
 }
 
-TEST_F(RenderCommand, MissingOutputDirectoryFailsBeforeRendering) {
-  const auto outcome = render({"-o", (dir_ / "missing" / "image.exr").string()});
-  EXPECT_EQ(outcome.status, 1);
-  EXPECT_NE(outcome.stderrText.find("-o: the output's directory does not exist"), std::string::npos)
-      << outcome.stderrText;
-  // The summary line of a finished render says "spp"; none must have run.
-  EXPECT_EQ(outcome.stderrText.find("spp"), std::string::npos) << outcome.stderrText;
+// The rule of every command: missing folders on the way to an output are created.
+TEST_F(RenderCommand, MissingOutputFoldersAreCreated) {
+  const auto outcome = render({"-o", (dir_ / "missing" / "deeper" / "image.exr").string()});
+  EXPECT_EQ(outcome.status, 0) << outcome.stderrText;
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "missing" / "deeper" / "image.exr"));
 }
 
 TEST_F(RenderCommand, OutputInsideAFileFailsBeforeRendering) {
   std::ofstream(dir_ / "file") << "not a directory";
   const auto outcome = render({"-o", (dir_ / "file" / "image.png").string()});
   EXPECT_EQ(outcome.status, 1);
-  EXPECT_NE(outcome.stderrText.find("-o:"), std::string::npos) << outcome.stderrText;
+  EXPECT_NE(outcome.stderrText.find("-o: cannot create the folder"), std::string::npos)
+      << outcome.stderrText;
+  // The summary line of a finished render says "spp"; none must have run.
+  EXPECT_EQ(outcome.stderrText.find("spp"), std::string::npos) << outcome.stderrText;
 }
 
 TEST_F(RenderCommand, BounceCountBeyondTheLimitIsRejected) {

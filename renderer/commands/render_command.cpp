@@ -4,10 +4,12 @@
 #include <unistd.h>
 
 #include <cstdlib>
-#include <fstream>
 
 #include "commands/component_output.h"
+#include "commands/number_options.h"
+#include "commands/output_paths.h"
 #include "commands/seed_option.h"
+#include "commands/subcommand.h"
 #include "distributed/distributed_render.h"
 #include "film/image_io.h"
 #include "integrators/integrator_registry.h"
@@ -15,7 +17,7 @@
 #include "integrators/strategy_explanation.h"
 #include "render/interrupt.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene/scene_at_width.h"
 
 namespace verity {
 
@@ -23,7 +25,8 @@ namespace {
 
 struct RenderArgs {
   std::string scene;
-  int spp = 0;
+  int spp = 0;         // 0: the scene's
+  int resolution = 0;  // image width; 0: the scene's
   int threads = 0;
   uint64_t seed = 0;
   std::string integrator;
@@ -42,20 +45,6 @@ std::string lowerExtension(const std::filesystem::path& p) {
   return e;
 }
 
-// Fails before a render, not after it, when an output file cannot be created: tries to create
-// a probe file beside it (permission bits alone do not tell, for instance for root).
-void checkWritable(const std::filesystem::path& output) {
-  const std::filesystem::path dir =
-      output.parent_path().empty() ? std::filesystem::path(".") : output.parent_path();
-  std::error_code error;
-  if (!std::filesystem::is_directory(dir, error))
-    throw VerityError("", "-o", "the output's directory does not exist: \"" + dir.string() + "\"");
-  const std::filesystem::path probe = output.string() + ".verity-probe";
-  if (!std::ofstream(probe))
-    throw VerityError("", "-o", "cannot create files in \"" + dir.string() + "\"");
-  std::filesystem::remove(probe, error);
-}
-
 // Written under a temporary name and renamed when whole, so that a job killed while writing
 // (a rank of an MPI job dying takes rank 0 with it) leaves no file that looks complete.
 void writeImage(const std::filesystem::path& out, const ImageChannels& image) {
@@ -68,7 +57,7 @@ void writeImage(const std::filesystem::path& out, const ImageChannels& image) {
 }
 
 int run(const RenderArgs& args, const ProcessGroup& group) {
-  SceneFile file = loadScene(args.scene);
+  SceneFile file = loadSceneAtWidth(args.scene, args.resolution);
   if (group.isRoot())
     for (const VerityError& warning : file.warnings)
       fmt::print(stderr, "verity: warning: {}\n", warning.what());
@@ -102,7 +91,7 @@ int run(const RenderArgs& args, const ProcessGroup& group) {
   }
 
   if (group.isRoot())
-    for (const auto& out : outputs) checkWritable(out);
+    for (const auto& out : outputs) prepareOutputFile(out, "-o");
 
   const Vector2i& resolution = file.scene->camera().resolution();
   const bool splitsStrategies = !args.strategies.empty();
@@ -124,7 +113,6 @@ int run(const RenderArgs& args, const ProcessGroup& group) {
   options.components = components.get();
   options.samplesPerPixel = args.spp > 0 ? args.spp : file.sampler->samplesPerPixel();
   options.threads = group.threadsPerRank(args.threads);
-  options.seed = args.seed;
   options.progress = group.isRoot() && isatty(STDERR_FILENO);
   InterruptGuard interrupt(/*alsoTerminate=*/group.distributed());
   options.cancel = &InterruptGuard::flag();
@@ -188,30 +176,42 @@ int run(const RenderArgs& args, const ProcessGroup& group) {
 
 void addRenderCommand(CLI::App& app, const ProcessGroup& group) {
   auto args = std::make_shared<RenderArgs>();
-  CLI::App* cmd = app.add_subcommand("render", "Render a DIRT-format JSON scene");
+  CLI::App* cmd =
+      addSubcommand(app, "render", "Render a DIRT-format JSON scene", MpiUse::SplitsWork, group);
   cmd->add_option("scene", args->scene, "Scene file (.json)")->required();
-  cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")
-      ->check(CLI::PositiveNumber);
+  cmd->add_option("--spp", args->spp, "Samples per pixel")
+      ->default_str("the scene's")
+      ->check(wholeNumber(1));
+  cmd->add_option("--resolution", args->resolution,
+                  "Image width in pixels, the scene's aspect ratio kept")
+      ->default_str("the scene's")
+      ->check(wholeNumber(1));
   cmd->add_option("--threads", args->threads,
-                  "Worker threads per process (default: all cores; under mpirun, the host's "
-                  "cores shared among its ranks)")
-      ->check(CLI::NonNegativeNumber);
-  addSeedOption(cmd, args->seed, "Seed of the render's random numbers (0 to 2^64 - 1)");
-  cmd->add_option("--integrator", args->integrator, integratorTypeList());
+                  "Worker threads per process; 0: all cores (under mpirun, the host's cores "
+                  "shared among its ranks)")
+      ->check(wholeNumber(0));
+  addSeedOption(cmd, args->seed, "Seed of the render's random numbers (0 to 2^64 - 1)")
+      ->default_str("0");
+  cmd->add_option("--integrator", args->integrator, integratorTypeList())
+      ->default_str("the scene's");
   cmd->add_option("--max-bounces", args->maxBounces,
                   "Maximum scattering events per path (0: emitters seen directly)")
-      ->check(CLI::Range(0, kMaxBouncesLimit));
-  CLI::Option* output = cmd->add_option(
-      "-o,--output", args->output, "Output .exr or .png (default: <scene name>.exr and .png here)");
+      ->default_str("the scene's")
+      ->check(wholeNumber(0, kMaxBouncesLimit));
+  CLI::Option* output =
+      cmd->add_option("-o,--output", args->output,
+                      "Output image file, .exr or .png; missing folders are created")
+          ->default_str("<scene name>.exr and .png here");
   cmd->add_flag("--variance", args->variance,
                 "Add variance.R/G/B (per-sample variance) and samples channels to the EXR");
   auto* strategies = cmd->add_option(
       "--strategies", args->strategies,
-      "Directory for the MIS-weighted and unweighted image of every BDPT strategy (s, t) and "
-      "a manifest.json (bdpt only)");
+      "Folder for the MIS-weighted and unweighted image of every BDPT strategy (s, t) and "
+      "a manifest.json (bdpt only; created if missing)");
   CLI::Option* pathLengths =
       cmd->add_option("--path-lengths", args->pathLengths,
-                      "Directory for one image per path length (bounces) and a manifest.json")
+                      "Folder for one image per path length (bounces) and a manifest.json "
+                      "(created if missing)")
           ->excludes(strategies);
   cmd->add_flag("--strict", args->strict,
                 "Refuse a scene the loader warns about (an albedo above 1, a light emitting 0)");

@@ -62,9 +62,9 @@ int renderAndReduce(const ProcessGroup& group, PassRenderer& passes, int samples
     } else {
       const ReceivedChunk received = receiveFilm(owner, chunkFilm);
       if (received.chunk != chunk)
-        throw VerityError("", "",
-                          fmt::format("rank {} sent chunk {} where chunk {} was due", owner,
-                                      received.chunk, chunk));
+        throw VerityError("", fmt::format("MPI rank {}", owner),
+                          fmt::format("sent chunk {} where chunk {} was due", received.chunk,
+                                      chunk));
       done = received.passes;
     }
     const bool whole = done == chunkPasses(chunk, samplesPerPixel);
@@ -86,7 +86,8 @@ RenderStats renderDistributed(const ProcessGroup& group, const Scene& scene,
                               const RenderOptions& options) {
   if (!group.distributed()) return render(scene, integrator, sampler, film, options);
   if (options.components)
-    throw VerityError("", "", "component images are rendered by one process only");
+    throw VerityError("", "--strategies/--path-lengths",
+                      "component images are rendered by one process only");
   const auto start = std::chrono::steady_clock::now();
   const int spp = options.samplesPerPixel;
   if (integrator.needsEmitters() && !scene.summary().hasEmitters()) {

@@ -13,7 +13,8 @@ static_assert(sizeof(Eigen::Array3d) == 3 * sizeof(double));
 
 int elementCount(size_t n) {
   if (n > size_t(INT_MAX))
-    throw VerityError("", "", "the image is too large to send between MPI ranks in one message");
+    throw VerityError("", "camera.resolution",
+                      "the image is too large to send between MPI ranks in one message");
   return int(n);
 }
 }  // namespace

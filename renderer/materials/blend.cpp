@@ -76,7 +76,8 @@ MaterialType blendType() {
                 node[{key}].fail(
                     "a blend cannot contain an emitter: only a surface whose material is a "
                     "\"diffuse light\" emits; give the light its own surface");
-            TexturedColor amount = f.textures().parse(node, {"amount"}, Color3::Constant(0.5f));
+            TexturedColor amount =
+                f.textures().parse(node, {"amount"}, Color3::Constant(0.5f), "the blend amount");
             if (amount.isConstant() && !(amount.constant() <= 1).all())
               node[{"amount"}].fail("the blend amount must lie in [0, 1]");
             return std::make_shared<Blend>(std::move(a), std::move(b), std::move(amount));

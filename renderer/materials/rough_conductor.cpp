@@ -166,11 +166,10 @@ MaterialType metalType() {
            samplingKey()},
           [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
             TexturedColor albedo = f.parseAlbedo(node);
-            // A texture-valued roughness must not be negative where it is a constant (a
-            // texture is clamped at lookup).
-            TexturedColor roughness = f.textures().parse(node, {"roughness"}, Color3::Zero());
-            if (roughness.isConstant() && !(roughness.constant() >= 0).all())
-              node[{"roughness"}].fail("roughness must not be negative");
+            // A negative constant is refused by the texture factory (a texture is clamped at
+            // lookup).
+            TexturedColor roughness =
+                f.textures().parse(node, {"roughness"}, Color3::Zero(), "roughness");
             // α = roughness² must lie in kAlphaRange (roughness in [0.01, 2]), or be 0 (a mirror).
             if (roughness.isConstant()) {
               const Color3 r = roughness.constant();

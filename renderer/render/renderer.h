@@ -1,7 +1,7 @@
 // Renders an image in passes of one sample per pixel over 16×16 tiles on a TBB task arena.
-// Every sample's random numbers depend only on (seed, pixel, sample index), each tile is
-// written by one task, and passes are summed in fixed chunks (render/pass_chunks.h), so the
-// image is bit-identical for any thread count or schedule, and for any number of processes
+// Every sample's random numbers depend only on (the sampler's seed, pixel, sample index), each
+// tile is written by one task, and passes are summed in fixed chunks (render/pass_chunks.h), so
+// the image is bit-identical for any thread count or schedule, and for any number of processes
 // (distributed/). Stopping between passes leaves every pixel with the same number of samples.
 #pragma once
 
@@ -16,7 +16,6 @@ namespace verity {
 struct RenderOptions {
   int samplesPerPixel = 1;
   int threads = 0;  // 0: all cores
-  uint64_t seed = 0;
   bool progress = false;
   const std::atomic<bool>* cancel = nullptr;  // checked between passes
   // Per-strategy or per-path-length images to fill besides the film; null: none.
@@ -33,6 +32,8 @@ struct RenderStats {
   uint64_t invalidSamples = 0;
 };
 
+// `sampler` is the prototype every tile clones: its seed (Sampler::setSeed) is the render's one
+// seed.
 RenderStats render(const Scene& scene, const Integrator& integrator, const Sampler& sampler,
                    Film& film, const RenderOptions& options);
 

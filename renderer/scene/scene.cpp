@@ -32,7 +32,7 @@ Scene::Scene() {
   // No config string: "threads=N" would cap every TBB loop in the process (see the
   // engineering notes); the render's thread count is set by its task arena.
   device_ = rtcNewDevice(nullptr);
-  if (!device_) throw VerityError("", "", "cannot create the Embree device");
+  if (!device_) throw VerityError("", "Embree", "cannot create a device (rtcNewDevice failed)");
   rtcSetDeviceErrorFunction(device_, embreeError, nullptr);
   rtcScene_ = rtcNewScene(device_);
   rtcSetSceneFlags(rtcScene_, RTC_SCENE_FLAG_ROBUST);

@@ -17,6 +17,8 @@ namespace verity {
 MeshData loadObj(const std::filesystem::path& file, const Transform& toWorld,
                  const std::string& jsonPath) {
   const std::string name = file.string();
+  if (std::filesystem::is_directory(file))
+    throw VerityError("", jsonPath, "\"" + name + "\" is a directory, not a mesh file");
   if (!std::filesystem::is_regular_file(file))
     throw VerityError("", jsonPath, "mesh file \"" + name + "\" does not exist");
   std::ifstream in(file, std::ios::binary);

@@ -47,7 +47,7 @@ CASES = {
     "image-samples-zero": (scene(image_samples=0), "image_samples"),
     "image-samples-fraction": (scene(image_samples=2.5), "image_samples"),
     "image-samples-string": (scene(image_samples="many"), "image_samples: expected an integer"),
-    "sampler-unknown": (scene(sampler={"type": "sobol"}), "sampler.type"),
+    "sampler-unknown": (scene(sampler={"type": "zsobol"}), "sampler.type"),
     "sampler-disagrees": (scene(image_samples=4, sampler={"type": "independent", "samples": 8}), "sampler.samples"),
     "sampler-unknown-key": (scene(sampler={"type": "independent", "seed": 3}), "sampler.seed: unknown key"),
     # Camera.

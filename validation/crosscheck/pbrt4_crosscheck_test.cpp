@@ -1,4 +1,4 @@
-// Ground truth from a second independent renderer (issue 25, part 4): pbrt-v4, built outside
+// Ground truth from a second independent renderer: pbrt-v4, built outside
 // this repository, rendered each twin scene of scenes/pbrt-v4/ (a .pbrt file and a .json
 // file written from one description by make_scenes.py) 16 times with independent seeds
 // (references/pbrt-v4/README.md says how, and why the grey scenes let pbrt-v4's spectral

@@ -1,4 +1,4 @@
-// pbrt-v4's integrators compared with each other (issue 25, part 4), on renders of
+// pbrt-v4's integrators compared with each other, on renders of
 // scenes/pbrt-v4/ committed under references/pbrt-v4/ (its README says how each was made:
 // pbrt-v4 built outside this repository, `Sampler "independent"`, one render per `--seed`).
 // Each comparison is what `verity compare --tile 8 -a A/seed-*.exr -b B/seed-*.exr` decides

@@ -1,4 +1,4 @@
-// Ground truth from an independent renderer (issue 17): pbrt-v3, built outside this repository,
+// Ground truth from an independent renderer: pbrt-v3, built outside this repository,
 // rendered each scene of scenes/crosscheck/ several times with independent seeds
 // (references/crosscheck/README.md says how, and every model difference). Each of our
 // integrators that converges there must agree with it:

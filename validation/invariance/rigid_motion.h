@@ -1,7 +1,7 @@
 // Rigid motions of a whole scene, camera included: radiance does not depend on where the
 // scene is or how it is turned, so every motion must leave the image unchanged in
 // expectation, and a mirror image must give the image mirrored. A test that no integrator
-// can pass by sharing a bug with another (issue 17).
+// can pass by sharing a bug with another.
 #pragma once
 
 #include <Eigen/Dense>

@@ -1,4 +1,4 @@
-// Rigid-motion invariance (issue 17): every shipped, stress and cross-check scene, moved as a whole
+// Rigid-motion invariance: every shipped, stress and cross-check scene, moved as a whole
 // with its camera (rigid_motion.h: onto the coordinate planes, far away, turned by 90° steps and by
 // 37°, mirrored), must render the same image with every integrator. Nothing here compares
 // two integrators, so no shared bug can hide: a floor at y = 0 made next-event estimation 21%
@@ -74,7 +74,7 @@ struct Scene {
 Scene prepare(const std::filesystem::path& file, int width) {
   Scene s;
   s.file = file;
-  s.json = *studies::sceneJsonAtWidth(file, width);
+  s.json = *sceneJsonAtWidth(file, width);
   s.loaded = loadSceneText(s.json.dump(), file);
   const Vector2i res = s.loaded.scene->camera().resolution();
   s.regionOf = tileRegions(res.x(), res.y(), kTileSize, &s.tiles);

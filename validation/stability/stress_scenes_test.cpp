@@ -51,7 +51,6 @@ Rendered renderFile(SceneFile file, const std::string& integrator, uint64_t seed
   Rendered r{Film(file.scene->camera().resolution()), {}};
   RenderOptions options;
   options.samplesPerPixel = file.sampler->samplesPerPixel();
-  options.seed = seed;
   file.sampler->setSeed(seed);
   r.stats = verity::render(*file.scene, *render, *file.sampler, r.film, options);
   return r;

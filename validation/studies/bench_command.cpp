@@ -9,13 +9,15 @@
 #include <chrono>
 #include <numeric>
 
+#include "commands/number_options.h"
+#include "commands/subcommand.h"
 #include "core/error.h"
 #include "film/image_io.h"
+#include "integrators/integrator_registry.h"
 #include "integrators/integrator_settings.h"
 #include "render/renderer.h"
 #include "sampling/independent_sampler.h"
 #include "sampling/warp.h"
-#include "scene/scene_loader.h"
 #include "validation/studies/relative_error.h"
 #include "validation/studies/seeds.h"
 #include "validation/studies/study_scene.h"
@@ -35,6 +37,9 @@ struct BenchArgs {
   std::vector<std::string> integrators = {"path_tracer_nee", "path_tracer_mis", "bdpt"};
   int threads = 0;
   int maxBounces = -1;  // -1: the scene's
+  // Russian roulette depths compared with --reference, each with every integrator; empty: the
+  // scene's (or the default).
+  std::vector<int> rrDepths;
 };
 
 double seconds(std::chrono::steady_clock::duration d) {
@@ -172,7 +177,7 @@ int runBdpt(const SceneFile& file, const BenchArgs& args) {
 // hit all alike; relMSE is the mean over repeats (unbiased for its expectation), seconds the
 // median.
 int runEfficiency(const SceneFile& file, const BenchArgs& args) {
-  const ImageChannels reference = readExr(args.reference);
+  const ImageChannels reference = studies::readReference(args.reference);
   const Vector2i resolution = file.scene->camera().resolution();
   if (reference.width != resolution.x() || reference.height != resolution.y())
     throw VerityError(args.reference, "",
@@ -180,16 +185,28 @@ int runEfficiency(const SceneFile& file, const BenchArgs& args) {
                                   reference.width, reference.height, resolution.x(), resolution.y(),
                                   reference.width));
   struct Measured {
+    std::string label;  // the integrator, and its roulette depth when --rr-depth compares some
     IntegratorSettings settings;
     std::unique_ptr<Integrator> integrator;
     std::vector<double> seconds, relMse;
+    studies::FireflyShare fireflies;  // summed over the repeats
   };
   std::vector<Measured> measured;
   for (const std::string& name : args.integrators) {
-    Measured m;
-    m.settings = studies::studyIntegrator(file, name, args.maxBounces);
-    m.integrator = makeIntegrator(m.settings);
-    measured.push_back(std::move(m));
+    const IntegratorSettings settings = studies::studyIntegrator(file, name, args.maxBounces);
+    if (!args.rrDepths.empty() && !declaresKey(*findIntegratorType(settings.type), "rr_depth"))
+      throw VerityError("", "--rr-depth",
+                        "the integrator \"" + settings.type + "\" has no Russian roulette");
+    const std::vector<int> depths =
+        args.rrDepths.empty() ? std::vector<int>{settings.rrDepth} : args.rrDepths;
+    for (const int depth : depths) {
+      Measured m;
+      m.settings = settings;
+      m.settings.rrDepth = depth;
+      m.label = args.rrDepths.empty() ? name : fmt::format("{} rr_depth {}", name, depth);
+      m.integrator = makeIntegrator(m.settings);
+      measured.push_back(std::move(m));
+    }
   }
   const double referenceRelMse = studies::referenceRelMse(reference);
   fmt::print("scene {}: {}×{}, {} spp, {} threads, against {} (its own relMSE {:.3g})\n", file.name,
@@ -198,11 +215,16 @@ int runEfficiency(const SceneFile& file, const BenchArgs& args) {
   for (int r = 0; r < args.repeats; ++r)
     for (Measured& m : measured) {
       Film film(resolution);
+      film.trackMaxima();
       const uint64_t seed = studies::runSeed(m.settings.type, "bench", args.spp, r);
       const studies::TimedRender t =
           studies::timedRender(file, *m.integrator, film, args.spp, args.threads, seed);
       m.seconds.push_back(t.wallSeconds);
       m.relMse.push_back(studies::compareToReference(film, reference).relMse);
+      const studies::FireflyShare f = studies::fireflyShare(film, reference);
+      m.fireflies.pixels += f.pixels;
+      m.fireflies.relMseSum += f.relMseSum;
+      m.fireflies.allRelMseSum += f.allRelMseSum;
     }
   std::vector<double> relMse, efficiency;
   for (const Measured& m : measured) {
@@ -213,10 +235,17 @@ int runEfficiency(const SceneFile& file, const BenchArgs& args) {
   const double best = *std::max_element(efficiency.begin(), efficiency.end());
   for (size_t i = 0; i < measured.size(); ++i)
     fmt::print("{:<18} {:8.3f} s  relMSE {:.4g}  efficiency {:10.4g}  ({:.2f}x the best)\n",
-               measured[i].settings.type, median(measured[i].seconds), relMse[i], efficiency[i],
+               measured[i].label, median(measured[i].seconds), relMse[i], efficiency[i],
                efficiency[i] / best);
+  for (const Measured& m : measured)
+    fmt::print("{:<18} fireflies: {:.1f} pixels per render, {:.1f}% of relMSE\n", m.label,
+               double(m.fireflies.pixels) / args.repeats, 100 * m.fireflies.share());
   fmt::print("seconds: medians of {} alternating repeats; relMSE: their mean (epsilon {})\n",
              args.repeats, studies::kRelEpsilon);
+  fmt::print(
+      "fireflies: pixels whose largest sample m, over n samples, exceeds the reference r by "
+      "(m - r) / n > sqrt(r^2 + epsilon) in some channel (that sample alone gives a relative "
+      "squared error of at least 1), and their share of the summed relative squared error\n");
   if (referenceRelMse > 0.1 * *std::min_element(relMse.begin(), relMse.end()))
     fmt::print(
         "warning: the reference's own error is over a tenth of the runs' error; "
@@ -227,9 +256,11 @@ int runEfficiency(const SceneFile& file, const BenchArgs& args) {
 int run(const BenchArgs& args) {
   // The camera's own resolution changes (aspect kept), so the image is the whole picture
   // and splats land where they belong.
-  SceneFile file = studies::loadStudyScene(args.scene, args.resolution);
+  SceneFile file = loadSceneAtWidth(args.scene, args.resolution);
   if (!args.reference.empty() && args.bdpt)
     throw VerityError("", "--reference", "--reference and --bdpt are separate measurements");
+  if (!args.rrDepths.empty() && args.reference.empty())
+    throw VerityError("", "--rr-depth", "compares efficiencies, so it needs --reference");
   if (!args.reference.empty()) return runEfficiency(file, args);
   if (args.bdpt) return runBdpt(file, args);
   IntegratorSettings settings = studies::studyIntegrator(file, "path_tracer_nee", args.maxBounces);
@@ -267,30 +298,42 @@ int run(const BenchArgs& args) {
 
 }  // namespace
 
-void addBenchCommand(CLI::App& app) {
+void addBenchCommand(CLI::App& app, const ProcessGroup& group) {
   auto args = std::make_shared<BenchArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "bench", "Raw Embree ray throughput vs the path tracer's rays/s, 2-thread speedup, memory");
+  CLI::App* cmd = addSubcommand(
+      app, "bench",
+      "Raw Embree ray throughput vs the path tracer's rays/s, 2-thread speedup, memory; prints "
+      "its results and writes no file",
+      MpiUse::OneProcess, group);
   cmd->add_option("scene", args->scene, "Scene file (.json)")->required();
   cmd->add_option("--spp", args->spp, "Samples per pixel of each timed render")
-      ->check(CLI::PositiveNumber);
+      ->check(wholeNumber(1));
   cmd->add_option("--resolution", args->resolution,
-                  "Image width, the scene's aspect kept (default: the scene's resolution)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--max-bounces", args->maxBounces, "Maximum bounces (default: the scene's)")
-      ->check(CLI::Range(0, kMaxBouncesLimit));
+                  "Image width in pixels, the scene's aspect ratio kept")
+      ->default_str("the scene's")
+      ->check(wholeNumber(1));
+  cmd->add_option("--max-bounces", args->maxBounces,
+                  "Maximum scattering events per path (0: emitters seen directly)")
+      ->default_str("the scene's")
+      ->check(wholeNumber(0, kMaxBouncesLimit));
   cmd->add_flag("--bdpt", args->bdpt,
                 "Time bdpt against path_tracer_nee per sample, and bdpt's 2-thread speedup");
   cmd->add_option("--repeats", args->repeats, "Alternating repeats (medians are reported)")
-      ->check(CLI::PositiveNumber);
+      ->check(wholeNumber(1));
   cmd->add_option("--reference", args->reference,
                   "Reference image (.exr): print each integrator's efficiency 1 / (relMSE · s)");
-  cmd->add_option("--integrators", args->integrators,
-                  "Integrators compared with --reference (comma-separated)")
+  cmd->add_option("--integrator", args->integrators,
+                  "Integrators compared with --reference, comma-separated")
       ->delimiter(',');
-  cmd->add_option("--threads", args->threads,
-                  "Threads of the --reference renders (default: all cores)")
-      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--threads", args->threads, "Threads of the --reference renders; 0: all cores")
+      ->check(wholeNumber(0));
+  cmd->add_option("--rr-depth", args->rrDepths,
+                  "Russian roulette depths compared with --reference, comma-separated: the "
+                  "scattering event after which roulette first decides (the integrator's "
+                  "\"rr_depth\")")
+      ->default_str("the scene's")
+      ->delimiter(',')
+      ->check(wholeNumber(1));
   cmd->callback([args] { throw CLI::RuntimeError(run(*args)); });
 }
 

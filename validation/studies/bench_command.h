@@ -4,8 +4,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include "distributed/process_group.h"
+
 namespace verity {
 
-void addBenchCommand(CLI::App& app);
+// Runs in one process (it times one process's threads).
+void addBenchCommand(CLI::App& app, const ProcessGroup& group);
 
 }  // namespace verity

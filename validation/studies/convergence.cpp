@@ -39,7 +39,7 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
   if (!std::filesystem::exists(referencePath))
     throw VerityError(referencePath.string(), "",
                       "no reference image: make one with `verity reference` or pass --reference");
-  const ImageChannels reference = readExr(referencePath);
+  const ImageChannels reference = readReference(referencePath);
   const double referenceOwnRelMse = referenceRelMse(reference);
   auto attribute = [&](const std::string& name) {
     const auto it = reference.attributes.find(name);
@@ -49,7 +49,7 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
   // The study renders at the reference's resolution unless told otherwise (and then the
   // comparison reports the mismatch).
   const SceneFile file =
-      loadStudyScene(config.scene, config.resolution > 0 ? config.resolution : reference.width);
+      loadSceneAtWidth(config.scene, config.resolution > 0 ? config.resolution : reference.width);
   std::vector<PreparedIntegrator> integrators =
       prepareIntegrators(file, config.integrators, config.maxBounces);
   const Vector2i resolution = file.scene->camera().resolution();

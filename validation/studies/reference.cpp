@@ -34,7 +34,7 @@ void checkFinite(const ImageChannels& image, const std::filesystem::path& file) 
 }  // namespace
 
 ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup& group) {
-  const SceneFile file = loadStudyScene(config.scene, config.resolution);
+  const SceneFile file = loadSceneAtWidth(config.scene, config.resolution);
   const IntegratorSettings settings = studyIntegrator(file, config.integrator, config.maxBounces);
   const auto integrator = makeIntegrator(settings);
   const uint64_t seed =
@@ -99,7 +99,7 @@ ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup&
       // Every setting spelled out, so that the command remakes this image bit for bit at
       // `revision` (renders do not depend on the thread count).
       {"command", fmt::format("verity reference {} --spp {} --integrator {} --max-bounces {} "
-                              "--resolution {} --seed {} --dir {}",
+                              "--resolution {} --seed {} -o {}",
                               config.scene.string(), timed.stats.passes, settings.type,
                               settings.maxBounces, film.width(), seed, config.directory.string())},
       {"rel_mse", ownRelMse},

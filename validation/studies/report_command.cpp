@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "commands/output_paths.h"
+#include "commands/subcommand.h"
 #include "validation/studies/report.h"
 
 namespace verity {
@@ -15,16 +17,19 @@ struct ReportArgs {
 
 }  // namespace
 
-void addReportCommand(CLI::App& app) {
+void addReportCommand(CLI::App& app, const ProcessGroup& group) {
   auto args = std::make_shared<ReportArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "report", "Write an HTML page and a Markdown summary with plots from study results");
+  CLI::App* cmd = addSubcommand(
+      app, "report", "Write an HTML page and a Markdown summary with plots from study results",
+      MpiUse::OneProcess, group);
   cmd->add_option("results", args->inputs, "Results files (.jsonl) of `verity study`")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("-o,--output", args->output, "Report folder, e.g. reports/cornell-box/")
+  cmd->add_option("-o,--output", args->output,
+                  "Report folder, e.g. reports/cornell-box/ (created if missing)")
       ->required();
   cmd->callback([args] {
+    prepareOutputFolder(args->output, "-o");
     std::vector<std::filesystem::path> inputs(args->inputs.begin(), args->inputs.end());
     const int status = studies::makeReport(inputs, args->output);
     if (status != 0) {

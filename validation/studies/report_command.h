@@ -3,8 +3,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include "distributed/process_group.h"
+
 namespace verity {
 
-void addReportCommand(CLI::App& app);
+// Runs in one process.
+void addReportCommand(CLI::App& app, const ProcessGroup& group);
 
 }  // namespace verity

@@ -26,7 +26,7 @@ StudyProgress runSpeedupStudy(const SpeedupConfig& config,
                               const std::function<void(const std::string&)>& log,
                               const ProcessGroup& group) {
   if (config.threads.empty()) throw VerityError("", "--threads", "no thread count given");
-  const SceneFile file = loadStudyScene(config.scene, config.resolution);
+  const SceneFile file = loadSceneAtWidth(config.scene, config.resolution);
   std::vector<PreparedIntegrator> integrators =
       prepareIntegrators(file, config.integrators, config.maxBounces);
   const Vector2i resolution = file.scene->camera().resolution();

@@ -91,7 +91,7 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
 
   std::optional<ImageChannels> reference;
   if (!config.reference.empty()) reference = readExr(config.reference);
-  const SceneFile file = loadStudyScene(config.scene, config.resolution > 0 ? config.resolution
+  const SceneFile file = loadSceneAtWidth(config.scene, config.resolution > 0 ? config.resolution
                                                       : reference           ? reference->width
                                                                             : 0);
   const IntegratorSettings settings = studyIntegrator(file, "bdpt", config.maxBounces);

@@ -1,5 +1,5 @@
 // The BDPT strategies study: each strategy's share of the image, and each strategy's noise
-// against its path length's image and the path tracer's at growing budgets (issue 18).
+// against its path length's image and the path tracer's at growing budgets.
 #pragma once
 
 #include <filesystem>

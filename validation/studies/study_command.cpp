@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
-#include "core/error.h"
+#include "commands/number_options.h"
+#include "commands/output_paths.h"
+#include "commands/subcommand.h"
 #include "integrators/integrator_settings.h"
 #include "validation/studies/convergence.h"
 #include "validation/studies/json_lines.h"
@@ -16,7 +18,7 @@ namespace {
 
 void printSummary(const std::filesystem::path& results) {
   const auto records = studies::readJsonLines(results);
-  fmt::print("{}", studies::summaryText(studies::summarize(records)));
+  fmt::print("{}", studies::summaryText(studies::summarize(records, results.string())));
 }
 
 void logLine(const std::string& line) {
@@ -25,18 +27,22 @@ void logLine(const std::string& line) {
 
 // --spp or --time: the budgets of a study, one list or the other.
 struct Budgets {
-  std::shared_ptr<std::vector<double>> spp = std::make_shared<std::vector<double>>();
+  std::shared_ptr<std::vector<int>> spp = std::make_shared<std::vector<int>>();
   std::shared_ptr<std::vector<double>> time = std::make_shared<std::vector<double>>();
   std::string type() const { return time->empty() ? "spp" : "time"; }
-  const std::vector<double>& values() const { return time->empty() ? *spp : *time; }
+  std::vector<double> values() const {
+    return time->empty() ? std::vector<double>(spp->begin(), spp->end()) : *time;
+  }
 };
 
 Budgets addBudgetOptions(CLI::App* cmd, const std::string& sppHelp) {
   Budgets b;
-  CLI::Option* sppOption = cmd->add_option("--spp", *b.spp, sppHelp)->delimiter(',');
+  CLI::Option* sppOption =
+      cmd->add_option("--spp", *b.spp, sppHelp)->delimiter(',')->check(wholeNumber(1));
   CLI::Option* timeOption =
       cmd->add_option("--time", *b.time, "Budgets in seconds of wall time, comma-separated")
-          ->delimiter(',');
+          ->delimiter(',')
+          ->check(realNumber(0, false));
   sppOption->excludes(timeOption);
   timeOption->excludes(sppOption);
   return b;
@@ -47,29 +53,33 @@ void addConvergence(CLI::App& study, const ProcessGroup& group) {
   auto output = std::make_shared<std::string>("results.jsonl");
   auto reference = std::make_shared<std::string>();
   auto noImages = std::make_shared<bool>(false);
-  CLI::App* cmd = study.add_subcommand(
-      "convergence",
+  CLI::App* cmd = addSubcommand(
+      study, "convergence",
       "Independent seeded runs per integrator and budget: relative MSE against a reference, "
-      "wall and CPU time; appended to a JSON Lines file and resumable");
+      "wall and CPU time; appended to a JSON Lines file and resumable",
+      MpiUse::SplitsWork, group);
   cmd->add_option("scene", config->scene, "Scene file (.json)")->required();
-  cmd->add_option("--integrators", config->integrators, "Integrators, comma-separated")
+  cmd->add_option("--integrator", config->integrators, "Integrators, comma-separated")
       ->required()
       ->delimiter(',');
   cmd->add_option("--runs", config->runs, "Independent runs per integrator and budget")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(wholeNumber(1));
   const Budgets budgets = addBudgetOptions(cmd, "Budgets in samples per pixel, comma-separated");
-  cmd->add_option("--threads", config->threads,
-                  "Thread counts, comma-separated (0: all cores; default 0)")
-      ->delimiter(',');
-  cmd->add_option("--reference", *reference,
-                  "Reference EXR with variance channels (default: references/<scene>.exr)");
-  cmd->add_option("-o,--output", *output, "Results file (JSON Lines; appended to)")
-      ->capture_default_str();
-  cmd->add_option("--resolution", config->resolution, "Image width (default: the reference's)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--max-bounces", config->maxBounces, "Maximum scattering events per path")
-      ->check(CLI::Range(0, kMaxBouncesLimit));
+  cmd->add_option("--threads", config->threads, "Thread counts, comma-separated; 0: all cores")
+      ->delimiter(',')
+      ->check(wholeNumber(0));
+  cmd->add_option("--reference", *reference, "Reference EXR with variance channels")
+      ->default_str("references/<scene>.exr");
+  cmd->add_option("-o,--output", *output,
+                  "Results file (JSON Lines; appended to; missing folders are created)");
+  cmd->add_option("--resolution", config->resolution,
+                  "Image width in pixels, the scene's aspect ratio kept")
+      ->default_str("the reference's")
+      ->check(wholeNumber(1));
+  cmd->add_option("--max-bounces", config->maxBounces,
+                  "Maximum scattering events per path (0: emitters seen directly)")
+      ->default_str("the scene's")
+      ->check(wholeNumber(0, kMaxBouncesLimit));
   cmd->add_flag("--no-error-images", *noImages,
                 "Do not save relative-error images at the largest budget");
   cmd->add_flag("--force", config->force,
@@ -80,6 +90,7 @@ void addConvergence(CLI::App& study, const ProcessGroup& group) {
     config->budgetType = budgets.type();
     config->budgets = budgets.values();
     config->output = *output;
+    if (group.isRoot()) prepareOutputFile(*output, "-o");
     config->reference = *reference;
     config->errorImages = !*noImages;
     const studies::StudyProgress p = studies::runConvergenceStudy(*config, logLine, group);
@@ -92,32 +103,34 @@ void addConvergence(CLI::App& study, const ProcessGroup& group) {
 void addSpeedup(CLI::App& study, const ProcessGroup& group) {
   auto config = std::make_shared<studies::SpeedupConfig>();
   auto output = std::make_shared<std::string>("speedup.jsonl");
-  CLI::App* cmd = study.add_subcommand(
-      "speedup",
+  CLI::App* cmd = addSubcommand(
+      study, "speedup",
       "Time per integrator and thread count (alternating, medians): speed-up and parallel "
-      "efficiency");
+      "efficiency",
+      MpiUse::SplitsWork, group);
   cmd->add_option("scene", config->scene, "Scene file (.json)")->required();
   cmd->add_option("--threads", config->threads, "Thread counts, comma-separated")
-      ->capture_default_str()
       ->delimiter(',')
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--integrators", config->integrators, "Integrators, comma-separated")
+      ->check(wholeNumber(1));
+  cmd->add_option("--integrator", config->integrators, "Integrators, comma-separated")
       ->required()
       ->delimiter(',');
   cmd->add_option("--spp", config->spp, "Samples per pixel of each timed render")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--repeats", config->repeats, "Alternating repeats")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--resolution", config->resolution, "Image width (default: the scene's)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--max-bounces", config->maxBounces, "Maximum scattering events per path")
-      ->check(CLI::Range(0, kMaxBouncesLimit));
-  cmd->add_option("-o,--output", *output, "Results file (JSON Lines; appended to)")
-      ->capture_default_str();
+      ->check(wholeNumber(1));
+  cmd->add_option("--repeats", config->repeats, "Alternating repeats")->check(wholeNumber(1));
+  cmd->add_option("--resolution", config->resolution,
+                  "Image width in pixels, the scene's aspect ratio kept")
+      ->default_str("the scene's")
+      ->check(wholeNumber(1));
+  cmd->add_option("--max-bounces", config->maxBounces,
+                  "Maximum scattering events per path (0: emitters seen directly)")
+      ->default_str("the scene's")
+      ->check(wholeNumber(0, kMaxBouncesLimit));
+  cmd->add_option("-o,--output", *output,
+                  "Results file (JSON Lines; appended to; missing folders are created)");
   cmd->callback([=, &group] {
     config->output = *output;
+    if (group.isRoot()) prepareOutputFile(*output, "-o");
     const studies::StudyProgress p = studies::runSpeedupStudy(*config, logLine, group);
     if (!group.isRoot()) return;
     fmt::print(stderr, "{} renders done, {} already in {}\n", p.done, p.skipped, *output);
@@ -125,37 +138,36 @@ void addSpeedup(CLI::App& study, const ProcessGroup& group) {
   });
 }
 
-void addStrategies(CLI::App& study) {
+void addStrategies(CLI::App& study, const ProcessGroup& group) {
   auto config = std::make_shared<studies::StrategiesConfig>();
   auto reference = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>("strategies.jsonl");
   auto noImages = std::make_shared<bool>(false);
-  CLI::App* cmd = study.add_subcommand(
-      "strategies",
+  CLI::App* cmd = addSubcommand(
+      study, "strategies",
       "BDPT split into its strategies (s, t) per run and budget: each strategy's share of the "
       "image and the relative variance of its weighted and unweighted images, beside BDPT's "
-      "and a path tracer's path-length images");
+      "and a path tracer's path-length images",
+      MpiUse::OneProcess, group);
   cmd->add_option("scene", config->scene, "Scene file (.json)")->required();
-  const Budgets budgets =
-      addBudgetOptions(cmd, "Budgets in samples per pixel, comma-separated (default 64)");
-  cmd->add_option("--runs", config->runs, "Independent runs per budget")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--max-bounces", config->maxBounces, "Maximum scattering events per path")
-      ->capture_default_str()
-      ->check(CLI::Range(0, kMaxBouncesLimit));
+  const Budgets budgets = addBudgetOptions(cmd, "Budgets in samples per pixel, comma-separated");
+  cmd->get_option("--spp")->default_str("64");
+  cmd->add_option("--runs", config->runs, "Independent runs per budget")->check(wholeNumber(1));
+  cmd->add_option("--max-bounces", config->maxBounces,
+                  "Maximum scattering events per path (0: emitters seen directly)")
+      ->check(wholeNumber(0, kMaxBouncesLimit));
   cmd->add_option("--path-tracer", config->pathTracer,
-                  "The path tracer whose path-length images are set beside the strategies")
-      ->capture_default_str();
+                  "The path tracer whose path-length images are set beside the strategies");
   cmd->add_option("--resolution", config->resolution,
-                  "Image width (default: the reference's, else the scene's)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--threads", config->threads, "Worker threads (default: all cores)")
-      ->check(CLI::NonNegativeNumber);
+                  "Image width in pixels, the scene's aspect ratio kept")
+      ->default_str("the reference's, else the scene's")
+      ->check(wholeNumber(1));
+  cmd->add_option("--threads", config->threads, "Worker threads; 0: all cores")
+      ->check(wholeNumber(0));
   cmd->add_option("--reference", *reference,
                   "Reference EXR of the full image, for the share of longer paths (optional)");
-  cmd->add_option("-o,--output", *output, "Results file (JSON Lines; appended to)")
-      ->capture_default_str();
+  cmd->add_option("-o,--output", *output,
+                  "Results file (JSON Lines; appended to; missing folders are created)");
   cmd->add_flag("--no-images", *noImages,
                 "Do not save the weighted strategy images at the largest budget");
   cmd->add_flag("--force", config->force,
@@ -165,6 +177,7 @@ void addStrategies(CLI::App& study) {
     if (!budgets.values().empty()) config->budgets = budgets.values();
     config->reference = *reference;
     config->output = *output;
+    prepareOutputFile(*output, "-o");
     config->images = !*noImages;
     const studies::StudyProgress p = studies::runStrategiesStudy(*config, logLine);
     fmt::print(stderr, "{} records done, {} already in {}\n", p.done, p.skipped, *output);
@@ -175,16 +188,12 @@ void addStrategies(CLI::App& study) {
 }  // namespace
 
 void addStudyCommand(CLI::App& app, const ProcessGroup& group) {
-  CLI::App* study = app.add_subcommand("study", "Convergence, speed-up and BDPT strategy studies");
+  CLI::App* study = addSubcommand(app, "study", "Convergence, speed-up and BDPT strategy studies",
+                                  MpiUse::SplitsWork, group);
   study->require_subcommand(1);
   addConvergence(*study, group);
   addSpeedup(*study, group);
-  addStrategies(*study);
-  study->get_subcommand("strategies")->preparse_callback([&group](size_t) {
-    if (group.distributed())
-      throw VerityError("", "",
-                        "`verity study strategies` runs in one process; run it without mpirun");
-  });
+  addStrategies(*study, group);
 }
 
 }  // namespace verity

@@ -1,24 +1,16 @@
-// Scenes for studies and validation suites: loaded at a chosen width, the shipped corpus, and
-// the integrator a study asks for.
+// Scenes for studies and validation suites: the shipped corpus and the integrator a study asks
+// for (scene/scene_at_width.h loads a scene at a chosen width).
 #pragma once
 
 #include <filesystem>
-#include <nlohmann/json.hpp>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "integrators/integrator_settings.h"
-#include "scene/scene_loader.h"
+#include "scene/scene_at_width.h"
 
 namespace verity::studies {
 
-// Loads `file`; with width > 0 the camera renders width × (width · h / w) pixels (the
-// scene's aspect ratio kept) by rewriting the camera's resolution before the scene is built.
-SceneFile loadStudyScene(const std::filesystem::path& file, int width);
-// The scene's JSON with the camera's resolution rewritten that way, or nullopt when the file
-// is not JSON; throws VerityError when it cannot be read.
-std::optional<nlohmann::json> sceneJsonAtWidth(const std::filesystem::path& file, int width);
 // Every scene this project ships, sorted: scenes/*.json, scenes/stress/*.json and
 // scenes/crosscheck/*.json under `scenesDir`.
 std::vector<std::filesystem::path> shippedScenes(const std::filesystem::path& scenesDir);

@@ -31,11 +31,10 @@ TimedRender timedRender(const SceneFile& file, const Integrator& integrator, Fil
                         int threads, uint64_t seed, double timeLimit, ComponentImages* components,
                         const ProcessGroup& group) {
   if (group.distributed() && timeLimit > 0)
-    throw VerityError("", "", "a time-limited render cannot be split over MPI ranks");
+    throw VerityError("", "--time", "a time-limited render cannot be split over MPI ranks");
   RenderOptions options;
   options.components = components;
   options.threads = threads;
-  options.seed = seed;
   options.samplesPerPixel = timeLimit > 0 ? (1 << 24) : spp;
   std::atomic<bool> cancel{false};
   options.cancel = &cancel;
@@ -84,9 +83,9 @@ uint64_t renderBatches(const SceneFile& file, const std::string& integrator, int
     Film film(file.scene->camera().resolution());
     RenderOptions options;
     options.samplesPerPixel = spp;
-    options.seed = hashString(fmt::format("{} batch {}", key, batch));
-    file.sampler->setSeed(options.seed);
-    invalid += verity::render(*file.scene, *render, *file.sampler, film, options).invalidSamples;
+    const std::unique_ptr<Sampler> sampler = file.sampler->clone();
+    sampler->setSeed(hashString(fmt::format("{} batch {}", key, batch)));
+    invalid += verity::render(*file.scene, *render, *sampler, film, options).invalidSamples;
     onBatch(film);
   }
   return invalid;

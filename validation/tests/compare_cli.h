@@ -8,12 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "distributed/process_group.h"
 #include "validation/compare_command.h"
 
 namespace verity::validation::testing {
 
 struct CompareOutcome {
-  int status = -1;  // 0 agree, 1 differ, 2 bad input; 100 + CLI11's code on a parse error
+  int status = -1;  // 0 agree, 1 differ, 2 bad input (a command line that cannot be parsed too)
   std::string out, err;
 
   std::string text() const { return "status " + std::to_string(status) + "\n" + out + err; }
@@ -21,12 +22,13 @@ struct CompareOutcome {
 
 inline CompareOutcome runCompare(const std::vector<std::string>& args) {
   CLI::App app;
-  addCompareCommand(app);
+  addCompareCommand(app, ProcessGroup::solo());
   std::vector<std::string> words = {"verity", "compare"};
   words.insert(words.end(), args.begin(), args.end());
   std::vector<const char*> argv;
   for (const std::string& w : words) argv.push_back(w.c_str());
   CompareOutcome o;
+  std::string parseError;
   ::testing::internal::CaptureStdout();
   ::testing::internal::CaptureStderr();
   try {
@@ -35,10 +37,12 @@ inline CompareOutcome runCompare(const std::vector<std::string>& args) {
   } catch (const CLI::RuntimeError& e) {
     o.status = e.get_exit_code();
   } catch (const CLI::ParseError& e) {
-    o.status = 100 + e.get_exit_code();
+    // As the program reports it (app/main.cpp): the message on stderr and status 2.
+    o.status = 2;
+    parseError = std::string(e.what()) + "\n";
   }
   o.out = ::testing::internal::GetCapturedStdout();
-  o.err = ::testing::internal::GetCapturedStderr();
+  o.err = ::testing::internal::GetCapturedStderr() + parseError;
   return o;
 }
 

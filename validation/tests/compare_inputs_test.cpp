@@ -141,7 +141,7 @@ TEST_F(CompareInputs, NonFinitePixelsOfASetAreLeftOutAndCounted) {
   b[2] = write("inf", doctored);
   const std::string json = (dir_ / "report.json").string();
   std::vector<std::string> args = sideArguments(a, b);
-  args.insert(args.end(), {"--json", json});
+  args.insert(args.end(), {"-o", json});
   const CompareOutcome o = runCompare(args);
   EXPECT_EQ(o.status, 0) << o.out << o.err;
   EXPECT_NE(o.out.find("nan.exr has 1 pixels with a non-finite value"), std::string::npos) << o.out;
@@ -165,8 +165,9 @@ TEST_F(CompareInputs, OptionsOutOfRangeAreRefusedInWords) {
   };
   expectBadInput(with({"--tile", "0"}), {"--tile", "at least 1"});
   expectBadInput(with({"--tile", "8.5"}), {"--tile", "whole number"});
-  expectBadInput(with({"--alpha", "1.5"}), {"--alpha", "between 0 and 1"});
-  expectBadInput(with({"--alpha", "often"}), {"--alpha", "not a number"});
+  expectBadInput(with({"--alpha", "1.5"}), {"--alpha", "a number above 0 and below 1, not 1.5"});
+  expectBadInput(with({"--alpha", "often"}),
+                 {"--alpha", "a number above 0 and below 1, not often"});
   // Two images and sides at once, or one side only.
   std::vector<std::string> both = sideArguments(a, b);
   both.insert(both.begin(), a[0]);

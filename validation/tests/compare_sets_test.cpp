@@ -1,4 +1,4 @@
-// `verity compare` as a referee for sets of renders (issue 25, part 3), run through its
+// `verity compare` as a referee for sets of renders, run through its
 // command line (exit status 0 agree, 1 differ, 2 bad input) on renders made here by Verity's
 // own renderer: a floor of two lambertian halves under a quad light, direct light only
 // (max_bounces 1, path_tracer_nee), 32×32 pixels, kSpp samples per pixel per render, kRenders
@@ -65,8 +65,7 @@ Film render(double rightAlbedo, const std::string& seedName, int spp) {
   Film film(file.scene->camera().resolution());
   RenderOptions options;
   options.samplesPerPixel = spp;
-  options.seed = studies::hashString(seedName);
-  file.sampler->setSeed(options.seed);
+  file.sampler->setSeed(studies::hashString(seedName));
   const RenderStats stats = render(*file.scene, *integrator, *file.sampler, film, options);
   EXPECT_EQ(stats.invalidSamples, 0u);
   return film;

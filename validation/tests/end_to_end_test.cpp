@@ -47,7 +47,6 @@ PixelStatistics renderImage(const char* integratorType, uint64_t seed) {
   Film film(file.scene->camera().resolution());
   RenderOptions options;
   options.samplesPerPixel = kSpp;
-  options.seed = seed;
   file.sampler->setSeed(seed);
   const RenderStats stats = render(*file.scene, *integrator, *file.sampler, film, options);
   EXPECT_EQ(stats.invalidSamples, 0u);

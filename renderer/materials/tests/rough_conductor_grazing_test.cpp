@@ -1,5 +1,5 @@
 // The rough conductor's density at grazing incidence, where wo near −wi makes the half
-// vector's wi·h a difference of nearly equal numbers (issue 26, item 1).
+// vector's wi·h a difference of nearly equal numbers.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 

@@ -29,9 +29,8 @@ Rendered renderWith(const std::string& integrator, ComponentLayout::Kind kind, i
   RenderOptions options;
   options.samplesPerPixel = spp;
   options.threads = threads;
-  options.seed = 7;
   options.components = out.components.get();
-  file.sampler->setSeed(options.seed);
+  file.sampler->setSeed(7);
   render(*file.scene, *makeIntegrator(settings), *file.sampler, out.film, options);
   return out;
 }

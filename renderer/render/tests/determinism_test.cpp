@@ -32,8 +32,7 @@ std::vector<float> renderWithThreads(int threads) {
   RenderOptions options;
   options.samplesPerPixel = file.sampler->samplesPerPixel();
   options.threads = threads;
-  options.seed = 3;
-  file.sampler->setSeed(options.seed);
+  file.sampler->setSeed(3);
   render(*file.scene, *integrator, *file.sampler, film, options);
   std::vector<float> values;
   for (const auto& [name, plane] : filmChannels(film, true).planes)

@@ -62,6 +62,13 @@ TEST(SceneLoader, IntegratorSpellings) {
     EXPECT_EQ(f.integrator.maxBounces, 5);
     EXPECT_EQ(f.integrator.misPower, 2);
   }
+  EXPECT_EQ(loadSceneText(sceneWith(R"("integrator": {"type": "bdpt", "rr_depth": 7})"),
+                          "/tmp/a.json")
+                .integrator.rrDepth,
+            7);
+  EXPECT_EQ(loadSceneText(sceneWith(R"("integrator": {"type": "bdpt"})"), "/tmp/a.json")
+                .integrator.rrDepth,
+            kDefaultRouletteDepth);
   for (const char* type : {"normals", "ao", "path_tracer_mats", "path_tracer_nee"})
     EXPECT_EQ(loadSceneText(sceneWith(std::string(R"("integrator": {"type": ")") + type + "\"}"),
                             "/tmp/a.json")
@@ -249,7 +256,14 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{
             R"("integrator": {"type": "path_tracer_nee", "max_bounces": 3, "max bounces": 3})",
             "integrator"},
-        ErrorCase{R"("sampler": {"type": "sobol"})", "sampler.type"},
+        ErrorCase{R"("integrator": {"type": "path_tracer_nee", "rr_depth": -1})",
+                  "integrator.rr_depth: expected an integer in [1, "},
+        ErrorCase{R"("integrator": {"type": "bdpt", "rr_depth": 2.5})", "integrator.rr_depth"},
+        ErrorCase{R"("integrator": {"type": "light_tracer", "rr_depth": 0})",
+                  "integrator.rr_depth"},
+        ErrorCase{R"("integrator": {"type": "ao", "rr_depth": 3})",
+                  "integrator.rr_depth: unknown key"},
+        ErrorCase{R"("sampler": {"type": "zsobol"})", "sampler.type"},
         ErrorCase{R"("image_samples": 0)", "image_samples"},
         ErrorCase{R"("background": {"type": "sky"})", "background.type"},
         ErrorCase{R"("background": {"type": "image", "filename": "nope.exr"})",

@@ -1,6 +1,6 @@
 // Rays that leave a surface never find that surface again, and never pass a blocker lying just
 // in front of it: the ray offsets measured against Embree's own intersection arithmetic, family
-// by family (issue 17). Each family places one primitive (quad, triangle or sphere) at random
+// by family. Each family places one primitive (quad, triangle or sphere) at random
 // scales from 1e-4 to 1e5, either in a plane through the origin on one axis (exact zeros in
 // one coordinate: the case that made next-event estimation 21% dark) or under a random
 // rotation and translation, and leaves it with head-on and grazing rays on both sides, rays

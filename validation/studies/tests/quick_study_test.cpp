@@ -102,7 +102,7 @@ TEST(QuickStudy, CornellBoxEndToEnd) {
       EXPECT_TRUE(r.contains(key)) << key;
 
   // Slopes against spp.
-  const nlohmann::json summary = summarize(records);
+  const nlohmann::json summary = summarize(records, "quick.jsonl");
   int checked = 0;
   for (const nlohmann::json& g : summary["convergence"]) {
     const nlohmann::json& f = g["fit_spp"];
@@ -146,7 +146,7 @@ TEST(QuickStudy, StrategiesSharesAddUpAndResume) {
   EXPECT_NEAR(total, 1.0, 1e-4);
   EXPECT_EQ(records[0]["strategies"].size(), 14u);  // (s, t) with s + t − 2 ≤ 3, t ≥ 1
 
-  const nlohmann::json summary = summarize(records);
+  const nlohmann::json summary = summarize(records, "quick.jsonl");
   ASSERT_EQ(summary["strategies"].size(), 1u);
   const nlohmann::json& g = summary["strategies"][0];
   EXPECT_GE(g["carried_share"].get<double>(), kCarriedShare);

@@ -1,4 +1,4 @@
-// References and what a study accepts as one (issue 26, items 5 and 6).
+// References and what a study accepts as one.
 //   - A reference whose values half floats cannot hold (a visible emitter of radiance 1e5) is
 //     written in 32-bit floats, never with Inf; a dim one stays in half floats.
 //   - A study refuses a reference of another scene unless forced, and one of another
@@ -139,7 +139,7 @@ TEST_F(ReferenceTest, StudyRefusesAReferenceOfAnotherResolution) {
   EXPECT_FALSE(fs::exists(dir_ / "results.jsonl")) << "nothing may be rendered";
 }
 
-// A reference written before references were checked can hold Inf (issue 26, item 5).
+// A reference written before references were checked can hold Inf.
 TEST_F(ReferenceTest, StudyRefusesAReferenceHoldingInf) {
   const fs::path a = writeScene("a", 1);
   ImageChannels image = readExr(reference(a).image);

@@ -32,14 +32,14 @@ TEST(RunDistribution, TwoRanksRecordWhatOneProcessRecords) {
   const std::string scene = (fs::path(VERITY_SOURCE_DIR) / "scenes/cornell-box.json").string();
   const auto made =
       run({VERITY_BINARY, "reference", scene, "--spp", "16", "--resolution", "16", "--integrator",
-           "path_tracer_nee", "--threads", "1", "--dir", (dir / "ref").string()});
+           "path_tracer_nee", "--threads", "1", "-o", (dir / "ref").string()});
   ASSERT_EQ(made.status, 0) << made.stderrText;
   const auto study = [&](const fs::path& out) {
     return std::vector<std::string>{VERITY_BINARY,
                                     "study",
                                     "convergence",
                                     scene,
-                                    "--integrators",
+                                    "--integrator",
                                     "path_tracer_nee,bdpt",
                                     "--runs",
                                     "2",
@@ -91,7 +91,7 @@ TEST(RunDistribution, TimedRunsThatWouldShareCoresAreRefused) {
   const std::string scene = (fs::path(VERITY_SOURCE_DIR) / "scenes/cornell-box.json").string();
   const std::string cores = std::to_string(std::max(1u, std::thread::hardware_concurrency()));
   const auto job =
-      run(underMpirun(2, {VERITY_BINARY, "study", "speedup", scene, "--integrators",
+      run(underMpirun(2, {VERITY_BINARY, "study", "speedup", scene, "--integrator",
                           "path_tracer_nee", "--threads", cores, "--spp", "1", "--resolution", "16",
                           "--repeats", "1", "-o", (dir / "speedup.jsonl").string()}));
   EXPECT_NE(job.status, 0);

@@ -1,5 +1,5 @@
 // Every unbiased integrator against every other, on every shipped, stress and cross-check
-// scene (issues 5 and 17): path_tracer_mats, path_tracer_nee, path_tracer_mis and bdpt pairwise,
+// scene: path_tracer_mats, path_tracer_nee, path_tracer_mis and bdpt pairwise,
 // and the light tracer against each of them. No integrator is the reference: a bug two of them
 // share (the shadow rays of next-event estimation, say) still shows against the ones that do not
 // share it, path_tracer_mats above all, which traces no shadow ray. Every scene at 32 pixels wide,
@@ -104,7 +104,7 @@ struct SceneStatistics {
 SceneStatistics renderScene(int sceneIndex, const std::filesystem::path& path, bool pathLengths) {
   SceneStatistics out;
   out.name = studies::shippedSceneName(path);
-  const SceneFile file = studies::loadStudyScene(path, kWidth);
+  const SceneFile file = loadSceneAtWidth(path, kWidth);
   const Vector2i res = file.scene->camera().resolution();
   const std::vector<int> tiles = tileRegions(res.x(), res.y(), kTileSize, &out.tiles);
   std::vector<int> masked = tiles;
@@ -129,9 +129,8 @@ SceneStatistics renderScene(int sceneIndex, const std::filesystem::path& path, b
         components.emplace(ComponentLayout(ComponentLayout::Kind::PathLengths, kMaxBounces), res);
       RenderOptions options;
       options.samplesPerPixel = kBatchSpp[i];
-      options.seed = seedOf(sceneIndex, i, batch);
       options.components = components ? &*components : nullptr;
-      file.sampler->setSeed(options.seed);
+      file.sampler->setSeed(seedOf(sceneIndex, i, batch));
       out.invalidSamples +=
           render(*file.scene, *integrator, *file.sampler, film, options).invalidSamples;
       out.image[i]->addBatch(film);

@@ -1,0 +1,190 @@
+// The conventions every `verity` command shares: --version, --resolution, -o naming each
+// command's output (and the one rule for missing folders), one --integrator option, typed
+// numbers whose range errors are in words, defaults in --help, and status 2 for a command
+// line that cannot be parsed.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "film/image_io.h"
+#include "test_directory.h"
+#include "testing/child_process.h"
+
+namespace verity {
+namespace {
+
+class CommandLine : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = testing::freshTestDirectory("verity_command_line_");
+    // A 16 × 8 scene whose mesh is found relative to the scene file: a grey quad, lit by a
+    // white background, that covers the middle of the frame (|x| < 0.47 and |y| < 0.93 of the
+    // half-width and half-height at a field of view of 30 degrees).
+    std::filesystem::create_directories(dir_ / "scene" / "meshes");
+    std::ofstream(dir_ / "scene" / "meshes" / "quad.obj")
+        << "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3\nf 1 3 4\n";
+    scene_ = (dir_ / "scene" / "quad.json").string();
+    std::ofstream(scene_) << R"({
+      "camera": {"transform": {"from": [0, 0, 4], "at": [0, 0, 0], "up": [0, 1, 0]},
+                 "resolution": [16, 8], "vfov": 30},
+      "background": 1,
+      "surfaces": [{"type": "mesh", "filename": "meshes/quad.obj",
+                    "material": {"type": "lambertian", "albedo": 0.5}}]})";
+  }
+  testing::Outcome verity(const std::vector<std::string>& args) {
+    std::vector<std::string> all = {VERITY_BINARY};
+    all.insert(all.end(), args.begin(), args.end());
+    return testing::run(all);
+  }
+  // What `verity ARGS` prints on stdout (run from the folder `cwd`), and its status.
+  std::pair<std::string, int> stdoutOf(const std::string& args,
+                                       const std::filesystem::path& cwd = "/") {
+    const std::filesystem::path out = dir_ / "stdout.txt";
+    const testing::Outcome r = testing::run(
+        {"/bin/sh", "-c",
+         "cd '" + cwd.string() + "' && '" VERITY_BINARY "' " + args + " > '" + out.string() + "'"});
+    std::ifstream in(out);
+    return {std::string(std::istreambuf_iterator<char>(in), {}), r.status};
+  }
+
+  std::filesystem::path dir_;
+  std::string scene_;
+};
+
+TEST_F(CommandLine, VersionNamesTheRevision) {
+  const auto [text, status] = stdoutOf("--version");
+  EXPECT_EQ(status, 0);
+  EXPECT_TRUE(std::regex_match(text, std::regex("verity [0-9]+\\.[0-9]+\\.[0-9]+ \\(git "
+                                                "([0-9a-f]{12}|unknown)\\)\n")))
+      << text;
+}
+
+// The image is 8 × 4, the scene's aspect kept, and the mesh is found beside the scene although
+// the command runs from elsewhere.
+TEST_F(CommandLine, RenderAtAnotherResolution) {
+  const std::string out = (dir_ / "small.exr").string();
+  const auto [text, status] = stdoutOf("render '" + scene_ + "' --spp 1 --resolution 8 -o " + out);
+  ASSERT_EQ(status, 0);
+  const ImageChannels image = readExr(out);
+  EXPECT_EQ(image.width, 8);
+  EXPECT_EQ(image.height, 4);
+  // The quad fills the middle of the frame, darker than the background of 1.
+  EXPECT_LT(image.planes.at("R")[2 * 8 + 4], 0.9f);
+}
+
+// -o names every command's output: a file (render, compare), a folder (reference), a prefix
+// (chi2); missing folders on the way are created.
+TEST_F(CommandLine, DashOCreatesMissingFolders) {
+  const std::filesystem::path a = dir_ / "new" / "a" / "image.exr";
+  ASSERT_EQ(verity({"render", scene_, "--spp", "2", "--variance", "-o", a.string()}).status, 0);
+  EXPECT_TRUE(std::filesystem::exists(a));
+  const std::filesystem::path references = dir_ / "new" / "references";
+  const testing::Outcome reference =
+      verity({"reference", scene_, "--spp", "2", "--threads", "1", "-o", references.string()});
+  ASSERT_EQ(reference.status, 0) << reference.stderrText;
+  EXPECT_TRUE(std::filesystem::exists(references / "quad.exr"));
+  EXPECT_TRUE(std::filesystem::exists(references / "quad.json"));
+  const std::filesystem::path json = dir_ / "new" / "b" / "report.json";
+  const testing::Outcome compare =
+      verity({"compare", a.string(), (references / "quad.exr").string(), "-o", json.string()});
+  EXPECT_LE(compare.status, 1) << compare.stderrText;
+  EXPECT_TRUE(std::filesystem::exists(json));
+  const std::filesystem::path prefix = dir_ / "new" / "c" / "figure";
+  verity({"chi2", "--material", R"({"type":"lambertian"})", "--samples", "20000", "-o",
+          prefix.string()});
+  EXPECT_TRUE(std::filesystem::exists(prefix.string() + ".json"));
+}
+
+// A folder that cannot be made is refused by name before any work, by every command.
+TEST_F(CommandLine, DashOThroughAFileIsRefused) {
+  std::ofstream(dir_ / "file") << "not a folder";
+  const std::string blocked = (dir_ / "file" / "out").string();
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"render", scene_, "--spp", "1", "-o", blocked + ".exr"},
+        {"reference", scene_, "--spp", "1", "-o", blocked},
+        {"study", "speedup", scene_, "--integrator", "path_tracer_nee", "--threads", "1", "--spp",
+         "1", "--repeats", "1", "-o", blocked + ".jsonl"}}) {
+    const testing::Outcome r = verity(args);
+    EXPECT_NE(r.status, 0) << args[0];
+    EXPECT_NE(r.stderrText.find("-o: cannot create the folder"), std::string::npos) << r.stderrText;
+    EXPECT_EQ(r.stderrText.find("spp"), std::string::npos) << r.stderrText;
+  }
+}
+
+// One spelling, --integrator, taking a list where a command compares several; an unknown
+// member is named with the option as the user wrote it.
+TEST_F(CommandLine, OneIntegratorOption) {
+  const testing::Outcome r =
+      verity({"study", "speedup", scene_, "--integrator", "path_tracer_nee,foo", "--threads", "1",
+              "--spp", "1", "--repeats", "1", "-o", (dir_ / "speedup.jsonl").string()});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.stderrText.find("--integrator: "), std::string::npos) << r.stderrText;
+  EXPECT_NE(r.stderrText.find("\"foo\""), std::string::npos) << r.stderrText;
+  const testing::Outcome old =
+      verity({"study", "speedup", scene_, "--integrator", "bdpt", "--integrators", "bdpt"});
+  EXPECT_EQ(old.status, 2);
+  EXPECT_NE(old.stderrText.find("--integrators"), std::string::npos) << old.stderrText;
+}
+
+// Counts are whole numbers (2.5 is refused, not rounded), ranges are said in words, and a
+// command line that cannot be parsed exits with status 2 whatever the command.
+TEST_F(CommandLine, NumbersAreTypedAndRangesSaidInWords) {
+  const std::string out = (dir_ / "x.exr").string();
+  const std::string ref = (dir_ / "x").string();
+  struct Case {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  const Case cases[] = {
+      {{"render", scene_, "--spp", "0", "-o", out},
+       "--spp: must be a whole number of at least 1, not 0"},
+      {{"render", scene_, "--spp", "2.5", "-o", out},
+       "--spp: must be a whole number of at least 1, not 2.5"},
+      {{"render", scene_, "--resolution", "-3", "-o", out},
+       "--resolution: must be a whole number of at least 1, not -3"},
+      {{"render", scene_, "--threads", "-1", "-o", out},
+       "--threads: must be a whole number of at least 0, not -1"},
+      {{"reference", scene_, "--spp", "1.5", "-o", ref},
+       "--spp: must be a whole number of at least 1, not 1.5"},
+      {{"study", "convergence", scene_, "--integrator", "bdpt", "--spp", "4,2.5", "-o",
+        ref + ".jsonl"},
+       "--spp: must be a whole number of at least 1, not 2.5"},
+      {{"study", "convergence", scene_, "--integrator", "bdpt", "--time", "0", "-o",
+        ref + ".jsonl"},
+       "--time: must be a number above 0, not 0"},
+      {{"bench", scene_, "--repeats", "0"},
+       "--repeats: must be a whole number of at least 1, not 0"},
+      {{"compare", out, out, "--tile", "x"}, "--tile: must be a whole number of at least 1, not x"},
+      {{"compare", out, out, "--alpha", "1"},
+       "--alpha: must be a number above 0 and below 1, not 1"},
+      {{"chi2", "--material", R"({"type":"lambertian"})", "--incoming", "91"},
+       "--incoming: must be a number at least 0 and at most 90, not 91"},
+  };
+  for (const Case& c : cases) {
+    const testing::Outcome r = verity(c.args);
+    EXPECT_EQ(r.status, 2) << c.message << "\n" << r.stderrText;
+    EXPECT_NE(r.stderrText.find(c.message), std::string::npos) << r.stderrText;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// --help shows every option's default and what --threads 0 means.
+TEST_F(CommandLine, HelpShowsDefaults) {
+  const auto [render, renderStatus] = stdoutOf("render --help");
+  EXPECT_EQ(renderStatus, 0);
+  for (const char* text : {"--spp INT=the scene's", "0: all cores", "--resolution", "created"})
+    EXPECT_NE(render.find(text), std::string::npos) << text << "\n" << render;
+  const auto [chi2, chi2Status] = stdoutOf("chi2 --help");
+  EXPECT_EQ(chi2Status, 0);
+  for (const char* text : {"--samples INT=1000000", "500000", "PREFIX"})
+    EXPECT_NE(chi2.find(text), std::string::npos) << text << "\n" << chi2;
+  const auto [study, studyStatus] = stdoutOf("study speedup --help");
+  EXPECT_EQ(studyStatus, 0);
+  for (const char* text : {"--threads INT=[1,2]", "--spp INT=16", "--output TEXT=speedup.jsonl"})
+    EXPECT_NE(study.find(text), std::string::npos) << text << "\n" << study;
+}
+
+}  // namespace
+}  // namespace verity

@@ -1,0 +1,11 @@
+// The program's version and the git revision it was built from, written at build time into a
+// generated revision.cpp (app/write_revision.cmake) that only the `verity` target compiles, so
+// that a new commit rebuilds that one file and relinks the program, nothing else.
+#pragma once
+
+namespace verity {
+
+extern const char* const kVersion;   // the project's version, e.g. "0.1.0"
+extern const char* const kRevision;  // 12 hex digits of the commit, or "unknown" outside git
+
+}  // namespace verity
