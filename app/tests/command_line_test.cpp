@@ -74,6 +74,28 @@ TEST_F(CommandLine, RenderAtAnotherResolution) {
   EXPECT_LT(image.planes.at("R")[2 * 8 + 4], 0.9f);
 }
 
+// A variance estimated from the spread of a pixel's own samples is refused for a sampler whose
+// samples are correlated (stratified, halton, sobol): it would overstate the variance of the
+// mean and mislead verity compare. Without --variance the same scene renders.
+TEST_F(CommandLine, VarianceChannelsNeedIndependentSamples) {
+  for (const char* sampler : {"stratified", "halton", "sobol"}) {
+    std::ifstream in(scene_);
+    std::string json(std::istreambuf_iterator<char>(in), {});
+    json.insert(json.find('{') + 1, std::string(R"("sampler": {"type": ")") + sampler + "\"},");
+    const std::filesystem::path scene = dir_ / "scene" / (std::string(sampler) + ".json");
+    std::ofstream(scene) << json;
+    const std::string out = (dir_ / (std::string(sampler) + ".exr")).string();
+    const testing::Outcome refused =
+        verity({"render", scene.string(), "--spp", "4", "--variance", "-o", out});
+    EXPECT_EQ(refused.status, 1) << sampler << "\n" << refused.stderrText;
+    EXPECT_NE(refused.stderrText.find("sampler.type"), std::string::npos) << refused.stderrText;
+    EXPECT_NE(refused.stderrText.find("independent"), std::string::npos) << refused.stderrText;
+    EXPECT_FALSE(std::filesystem::exists(out));
+    const testing::Outcome rendered = verity({"render", scene.string(), "--spp", "4", "-o", out});
+    EXPECT_EQ(rendered.status, 0) << sampler << "\n" << rendered.stderrText;
+  }
+}
+
 // -o names every command's output: a file (render, compare), a folder (reference), a prefix
 // (chi2); missing folders on the way are created.
 TEST_F(CommandLine, DashOCreatesMissingFolders) {

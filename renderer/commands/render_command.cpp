@@ -17,6 +17,7 @@
 #include "integrators/strategy_explanation.h"
 #include "render/interrupt.h"
 #include "render/renderer.h"
+#include "sampling/sampler.h"
 #include "scene/scene_at_width.h"
 
 namespace verity {
@@ -90,6 +91,8 @@ int run(const RenderArgs& args, const ProcessGroup& group) {
     outputs = {args.output};
   }
 
+  if (args.variance)
+    requireIndependentSamples(*file.sampler, args.scene, "the variance channels (--variance)");
   if (group.isRoot())
     for (const auto& out : outputs) prepareOutputFile(out, "-o");
 

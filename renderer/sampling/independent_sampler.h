@@ -16,6 +16,7 @@ class IndependentSampler : public Sampler {
   std::unique_ptr<Sampler> clone() const override {
     return std::make_unique<IndependentSampler>(*this);
   }
+  bool samplesAreIndependent() const override { return true; }
 
  private:
   pcg32 rng_;

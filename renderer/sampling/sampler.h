@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include "core/math.h"
 
@@ -19,6 +20,11 @@ class Sampler {
   virtual float next1D() = 0;
   virtual Point2f next2D() = 0;
   virtual std::unique_ptr<Sampler> clone() const = 0;
+  // Whether a pixel's samples are independent of each other, so that their spread estimates
+  // the variance of their mean. Stratified and randomized quasi-Monte Carlo points are
+  // negatively correlated by design: their spread overstates that variance, often by far, and
+  // only independent randomizations (renders with different seeds) measure it.
+  virtual bool samplesAreIndependent() const { return false; }
   int samplesPerPixel() const { return spp_; }
   void setSamplesPerPixel(int spp) { spp_ = spp; }
   void setSeed(uint64_t seed) { seed_ = seed; }
@@ -28,6 +34,12 @@ class Sampler {
   int spp_ = 1;
   uint64_t seed_ = 0;
 };
+
+// Refuses, as an error naming `file` and its sampler, a sampler whose samples are not
+// independent where `use` (e.g. "the variance channels") estimates a variance from the spread
+// of a pixel's own samples.
+void requireIndependentSamples(const Sampler& sampler, const std::string& file,
+                               const std::string& use);
 
 // Reads the scene's "sampler" object: its "type" names an entry of the sampler registry
 // (sampler_registry.h), "independent" when absent; null `node` (no object) gives the default.

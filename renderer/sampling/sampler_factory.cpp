@@ -1,8 +1,19 @@
+#include "core/error.h"
 #include "sampling/sampler.h"
 #include "sampling/sampler_registry.h"
 #include "scene/json_node.h"
 
 namespace verity {
+
+void requireIndependentSamples(const Sampler& sampler, const std::string& file,
+                               const std::string& use) {
+  if (sampler.samplesAreIndependent()) return;
+  throw VerityError(file, "sampler.type",
+                    use +
+                        " estimate a variance from the spread of each pixel's samples, which "
+                        "only independent samples allow; this sampler correlates them (use the "
+                        "independent sampler, or compare renders made with different seeds)");
+}
 
 std::unique_ptr<Sampler> makeSampler(const JsonNode* node) {
   if (!node) return samplerTypes().front().build(nullptr);

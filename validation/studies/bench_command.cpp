@@ -233,12 +233,14 @@ int runEfficiency(const SceneFile& file, const BenchArgs& args) {
     efficiency.push_back(1 / (relMse.back() * median(m.seconds)));
   }
   const double best = *std::max_element(efficiency.begin(), efficiency.end());
+  size_t width = 18;
+  for (const Measured& m : measured) width = std::max(width, m.label.size());
   for (size_t i = 0; i < measured.size(); ++i)
-    fmt::print("{:<18} {:8.3f} s  relMSE {:.4g}  efficiency {:10.4g}  ({:.2f}x the best)\n",
-               measured[i].label, median(measured[i].seconds), relMse[i], efficiency[i],
+    fmt::print("{:<{}} {:8.3f} s  relMSE {:.4g}  efficiency {:10.4g}  ({:.2f}x the best)\n",
+               measured[i].label, width, median(measured[i].seconds), relMse[i], efficiency[i],
                efficiency[i] / best);
   for (const Measured& m : measured)
-    fmt::print("{:<18} fireflies: {:.1f} pixels per render, {:.1f}% of relMSE\n", m.label,
+    fmt::print("{:<{}} fireflies: {:.1f} pixels per render, {:.1f}% of relMSE\n", m.label, width,
                double(m.fireflies.pixels) / args.repeats, 100 * m.fireflies.share());
   fmt::print("seconds: medians of {} alternating repeats; relMSE: their mean (epsilon {})\n",
              args.repeats, studies::kRelEpsilon);

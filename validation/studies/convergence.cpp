@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "film/image_io.h"
+#include "sampling/sampler.h"
 #include "validation/studies/npy_file.h"
 #include "validation/studies/reference_match.h"
 #include "validation/studies/relative_error.h"
@@ -50,6 +51,8 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
   // comparison reports the mismatch).
   const SceneFile file =
       loadSceneAtWidth(config.scene, config.resolution > 0 ? config.resolution : reference.width);
+  requireIndependentSamples(*file.sampler, config.scene,
+                            "the convergence study's variance columns (rel_variance)");
   std::vector<PreparedIntegrator> integrators =
       prepareIntegrators(file, config.integrators, config.maxBounces);
   const Vector2i resolution = file.scene->camera().resolution();

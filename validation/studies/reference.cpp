@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/hash.h"
 #include "film/image_io.h"
+#include "sampling/sampler.h"
 #include "validation/studies/machine_info.h"
 #include "validation/studies/relative_error.h"
 #include "validation/studies/seeds.h"
@@ -35,6 +36,7 @@ void checkFinite(const ImageChannels& image, const std::filesystem::path& file) 
 
 ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup& group) {
   const SceneFile file = loadSceneAtWidth(config.scene, config.resolution);
+  requireIndependentSamples(*file.sampler, config.scene, "a reference image's variance channels");
   const IntegratorSettings settings = studyIntegrator(file, config.integrator, config.maxBounces);
   const auto integrator = makeIntegrator(settings);
   const uint64_t seed =

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "render/component_images.h"
+#include "sampling/sampler.h"
 #include "validation/studies/npy_file.h"
 #include "validation/studies/reference_match.h"
 #include "validation/studies/relative_error.h"
@@ -92,8 +93,10 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
   std::optional<ImageChannels> reference;
   if (!config.reference.empty()) reference = readExr(config.reference);
   const SceneFile file = loadSceneAtWidth(config.scene, config.resolution > 0 ? config.resolution
-                                                      : reference           ? reference->width
-                                                                            : 0);
+                                                        : reference           ? reference->width
+                                                                              : 0);
+  requireIndependentSamples(*file.sampler, config.scene,
+                            "the strategies study's variance columns (rel_variance_*)");
   const IntegratorSettings settings = studyIntegrator(file, "bdpt", config.maxBounces);
   const IntegratorSettings ptSettings =
       studyIntegrator(file, config.pathTracer, settings.maxBounces);
