@@ -1,6 +1,7 @@
 // Materials whose every sample is a delta lobe or none at all: the histogram sees nothing,
-// so the verdict must be INCONCLUSIVE, naming the empty sample, and never PASSED. An index-matched rough dielectric (|ior − 1| <= 1e-3, rough_dielectric.h) is a
-// smooth pass-through; a diffuse light does not scatter.
+// so the verdict must be INCONCLUSIVE, naming the empty sample, and never PASSED. An index-matched
+// rough dielectric (|ior − 1| <= 1e-3, rough_dielectric.h) is a smooth pass-through; a diffuse
+// light does not scatter.
 #include <gtest/gtest.h>
 
 #include "chi2/suite.h"

@@ -62,9 +62,9 @@ int renderAndReduce(const ProcessGroup& group, PassRenderer& passes, int samples
     } else {
       const ReceivedChunk received = receiveFilm(owner, chunkFilm);
       if (received.chunk != chunk)
-        throw VerityError("", fmt::format("MPI rank {}", owner),
-                          fmt::format("sent chunk {} where chunk {} was due", received.chunk,
-                                      chunk));
+        throw VerityError(
+            "", fmt::format("MPI rank {}", owner),
+            fmt::format("sent chunk {} where chunk {} was due", received.chunk, chunk));
       done = received.passes;
     }
     const bool whole = done == chunkPasses(chunk, samplesPerPixel);

@@ -9,7 +9,11 @@ namespace {
 BackgroundType constantBackground() {
   return {"constant",
           "the same radiance from every direction",
-          {{"color", {}, ValueType::Rgb, "each channel >= 0", "required",
+          {{"color",
+            {},
+            ValueType::Rgb,
+            "each channel >= 0",
+            "required",
             "the radiance arriving from every direction"}},
           [](const JsonNode& node) {
             const JsonNode color = node[{"color"}];
@@ -22,7 +26,10 @@ BackgroundType constantBackground() {
 BackgroundType imageBackground() {
   return {"image",
           "a latitude-longitude image, importance-sampled by luminance",
-          {{"filename", {}, ValueType::String, "an image file, relative to the scene file",
+          {{"filename",
+            {},
+            ValueType::String,
+            "an image file, relative to the scene file",
             "required",
             "the radiance map: its top row is straight up (+y), its columns run once around y"}},
           [](const JsonNode& node) {
@@ -59,8 +66,11 @@ std::string backgroundTypeList() {
 }
 
 const KeyList& backgroundCommonKeys() {
-  static const KeyList keys = {{"type", {}, ValueType::String,
-                                "a background type's name (any letter case)", "required",
+  static const KeyList keys = {{"type",
+                                {},
+                                ValueType::String,
+                                "a background type's name (any letter case)",
+                                "required",
                                 "the background type"}};
   return keys;
 }

@@ -22,7 +22,7 @@ struct FormatType {
 };
 
 struct FormatFamily {
-  std::string name;      // as the markers spell it: "material", "surface", ...
+  std::string name;       // as the markers spell it: "material", "surface", ...
   const KeyList* common;  // the keys every object of the family takes (may be empty)
   std::vector<FormatType> types;
 };

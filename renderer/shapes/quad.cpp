@@ -62,15 +62,15 @@ ShapeSample Quad::sampleArea(const Point2f& u) const {
 ShapeType quadType() {
   return {"quad",
           "a rectangle centred in the local xy-plane, front side +z",
-          {{"size", {}, ValueType::Size2, "each > 0",
-            "1", "the side lengths along local x and y"}},
+          {{"size", {}, ValueType::Size2, "each > 0", "1", "the side lengths along local x and y"}},
           [](const JsonNode& node, const Transform& toWorld) -> std::unique_ptr<Shape> {
             Vector2f size(1, 1);
             if (auto s = node.find({"size"})) {
               if (s->isNumber()) {
                 size.setConstant(s->asFloat(Range::positive()));
               } else {
-                if (!s->isArray() || s->size() != 2) s->fail("expected a number or [width, height]");
+                if (!s->isArray() || s->size() != 2)
+                  s->fail("expected a number or [width, height]");
                 size = Vector2f((*s)[0].asFloat(Range::positive()),
                                 (*s)[1].asFloat(Range::positive()));
               }

@@ -28,17 +28,29 @@ std::string shapeTypeList() {
 
 const KeyList& surfaceCommonKeys() {
   static const KeyList keys = {
-      {"type", {}, ValueType::String, "a shape's name or \"group\" (any letter case)", "required",
+      {"type",
+       {},
+       ValueType::String,
+       "a shape's name or \"group\" (any letter case)",
+       "required",
        "the surface type"},
-      {"transform", {}, ValueType::Transform, "invertible", "identity",
+      {"transform",
+       {},
+       ValueType::Transform,
+       "invertible",
+       "identity",
        "places the surface's local frame in its parent's (the world's, or its group's)"}};
   return keys;
 }
 
 const KeyList& shapeCommonKeys() {
   static const KeyList keys = {
-      {"material", {}, ValueType::Material, "a name defined in \"materials\", or an object",
-       "required", "the surface's material; a \"diffuse_light\" makes the surface an emitter"}};
+      {"material",
+       {},
+       ValueType::Material,
+       "a name defined in \"materials\", or an object",
+       "required",
+       "the surface's material; a \"diffuse_light\" makes the surface an emitter"}};
   return keys;
 }
 

@@ -49,8 +49,12 @@ ShapeType meshType() {
   return {"mesh",
           "the triangles of a Wavefront OBJ file (polygons fan-triangulated), with its normals "
           "and uvs where it has them",
-          {{"filename", {}, ValueType::String, "an OBJ file, relative to the scene file",
-            "required", "the mesh to load"}},
+          {{"filename",
+            {},
+            ValueType::String,
+            "an OBJ file, relative to the scene file",
+            "required",
+            "the mesh to load"}},
           [](const JsonNode& node, const Transform& toWorld) -> std::unique_ptr<Shape> {
             const JsonNode file = node[{"filename"}];
             try {
@@ -67,11 +71,23 @@ ShapeType triangleType() {
   return {"triangle",
           "one triangle given by its corners; its front side is the one they turn "
           "counter-clockwise around",
-          {{"positions", {}, ValueType::Array, "3 points, each a number or [x, y, z]", "required",
+          {{"positions",
+            {},
+            ValueType::Array,
+            "3 points, each a number or [x, y, z]",
+            "required",
             "the corners, in local coordinates"},
-           {"normals", {}, ValueType::Array, "3 non-zero vectors", "the geometric normal",
+           {"normals",
+            {},
+            ValueType::Array,
+            "3 non-zero vectors",
+            "the geometric normal",
             "shading normals at the corners, interpolated across the triangle"},
-           {"uvs", {}, ValueType::Array, "3 pairs [u, v]", "barycentric (u, v)",
+           {"uvs",
+            {},
+            ValueType::Array,
+            "3 pairs [u, v]",
+            "barycentric (u, v)",
             "texture coordinates at the corners"}},
           [](const JsonNode& node, const Transform& toWorld) -> std::unique_ptr<Shape> {
             return std::make_unique<TriangleMesh>(keepFront(parseTriangle(node, toWorld), toWorld));

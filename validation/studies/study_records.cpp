@@ -49,9 +49,9 @@ void StudyOutput::append(const nlohmann::json& record) {
 
 void checkBudgets(const std::string& type, const std::vector<double>& budgets) {
   if (type != "spp" && type != "time")
-    throw VerityError("", "--spp/--time",
-                      "the budget is samples per pixel (--spp) or seconds (--time), not \"" +
-                          type + "\"");
+    throw VerityError(
+        "", "--spp/--time",
+        "the budget is samples per pixel (--spp) or seconds (--time), not \"" + type + "\"");
   if (budgets.empty()) throw VerityError("", "--spp/--time", "no budget given");
   for (double b : budgets) {
     if (!(b > 0))

@@ -49,8 +49,8 @@ TEST(RussianRoulette, DepthChangesImagesNotTheirExpectation) {
   ASSERT_EQ(atDefault.integrator.rrDepth, kDefaultRouletteDepth);
   atFirst.integrator.rrDepth = 1;
   ComparisonFamily family(kFamilyWiseLevel);
-  for (const char* integrator : {"path_tracer_mats", "path_tracer_nee", "path_tracer_mis", "bdpt",
-                                 "light_tracer"}) {
+  for (const char* integrator :
+       {"path_tracer_mats", "path_tracer_nee", "path_tracer_mis", "bdpt", "light_tracer"}) {
     const std::string key = fmt::format("roulette {}", integrator);
     const PixelStatistics a = renderTiles(atDefault, integrator, key);
     const PixelStatistics b = renderTiles(atFirst, integrator, key);

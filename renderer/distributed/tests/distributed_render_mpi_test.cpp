@@ -108,10 +108,10 @@ TEST_F(DistributedRender, RanksAndThreadsGiveTheSingleProcessImage) {
 
 TEST_F(DistributedRender, ReferenceAcrossRanksIsTheSingleProcessReference) {
   const auto args = [&](const fs::path& out) {
-    return std::vector<std::string>{VERITY_BINARY, "reference",     scene_,      "--spp",
-                                    "18",          "--resolution",  "24",        "--integrator",
-                                    "bdpt",        "--max-bounces", "4",         "--threads",
-                                    "1",           "-o",         out.string()};
+    return std::vector<std::string>{
+        VERITY_BINARY, "reference",    scene_,      "--spp",         "18", "--resolution",
+        "24",          "--integrator", "bdpt",      "--max-bounces", "4",  "--threads",
+        "1",           "-o",           out.string()};
   };
   const auto alone = run(args(dir_ / "single"));
   ASSERT_EQ(alone.status, 0) << alone.stderrText;

@@ -62,10 +62,10 @@ TEST(SceneLoader, IntegratorSpellings) {
     EXPECT_EQ(f.integrator.maxBounces, 5);
     EXPECT_EQ(f.integrator.misPower, 2);
   }
-  EXPECT_EQ(loadSceneText(sceneWith(R"("integrator": {"type": "bdpt", "rr_depth": 7})"),
-                          "/tmp/a.json")
-                .integrator.rrDepth,
-            7);
+  EXPECT_EQ(
+      loadSceneText(sceneWith(R"("integrator": {"type": "bdpt", "rr_depth": 7})"), "/tmp/a.json")
+          .integrator.rrDepth,
+      7);
   EXPECT_EQ(loadSceneText(sceneWith(R"("integrator": {"type": "bdpt"})"), "/tmp/a.json")
                 .integrator.rrDepth,
             kDefaultRouletteDepth);
