@@ -17,9 +17,8 @@
 #include "sampling/sampler.h"
 #include "sampling/sampler_registry.h"
 #include "scene/scene_at_width.h"
-#include "validation/batch_regions.h"
+#include "tile_batches.h"
 #include "validation/comparison_family.h"
-#include "validation/studies/timed_render.h"
 
 namespace verity::validation {
 namespace {
@@ -43,13 +42,8 @@ SceneFile sceneWithSampler(const std::string& sampler) {
 
 PixelStatistics renderTiles(const SceneFile& file, const std::string& integrator,
                             const std::string& key) {
-  const Vector2i res = file.scene->camera().resolution();
-  int tiles = 0;
-  const std::vector<int> regionOf = tileRegions(res.x(), res.y(), kTileSize, &tiles);
-  BatchRegions out(regionOf, tiles, key);
-  studies::renderBatches(file, integrator, kMaxBounces, kBatches, kBatchSpp, key,
-                         [&](const Film& film) { out.addBatch(film); });
-  return out.statistics();
+  return testing::renderTileBatches(file, integrator, kMaxBounces, kBatches, kBatchSpp, kTileSize,
+                                    key);
 }
 
 TEST(SamplerAgreement, EverySamplerEstimatesTheIndependentSamplersImage) {
