@@ -87,13 +87,13 @@ std::optional<Point2d> BsdfModelSubject::sample(pcg32& rng, Audit& audit) const 
       }
     }
   }
-  if (setup_.checkReciprocity) checkReciprocity(wo, audit);
+  if (setup_.checkReciprocity) checkReciprocity(wo, f, audit);
   return sphereCoords(setup_.frame.toWorld(wo));
 }
 
-void BsdfModelSubject::checkReciprocity(const Vector3d& wo, Audit& audit) const {
+void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::Array3d& f,
+                                        Audit& audit) const {
   const Vector3d& wi = setup_.wi;
-  const Eigen::Array3d f = model_.eval(wi, wo);
   const Eigen::Array3d fr = model_.eval(wo, wi);
   const Eigen::Array3d fi = model_.evalAdjoint ? model_.evalAdjoint(wi, wo) : fr;
   const double etaI = indexOn(wi), etaO = indexOn(wo);

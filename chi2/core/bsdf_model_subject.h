@@ -49,7 +49,8 @@ class BsdfModelSubject : public Subject {
   long long deltaSamples() const { return delta_.load(); }
 
  private:
-  void checkReciprocity(const Vector3d& wo, Audit& audit) const;
+  // f: eval(wi, wo), already computed by sample().
+  void checkReciprocity(const Vector3d& wo, const Eigen::Array3d& f, Audit& audit) const;
   std::string format(const Eigen::Array3d& value) const;
   double indexOn(const Vector3d& w) const {
     return w.z() > 0 ? model_.exteriorIndex : model_.interiorIndex;
