@@ -17,9 +17,11 @@
 #include "integrators/integrator_settings.h"
 #include "render/renderer.h"
 #include "sampling/independent_sampler.h"
+#include "sampling/sampler_registry.h"
 #include "sampling/warp.h"
 #include "validation/studies/relative_error.h"
 #include "validation/studies/seeds.h"
+#include "validation/studies/study_sampler.h"
 #include "validation/studies/study_scene.h"
 #include "validation/studies/timed_render.h"
 
@@ -40,6 +42,9 @@ struct BenchArgs {
   // Russian roulette depths compared with --reference, each with every integrator; empty: the
   // scene's (or the default).
   std::vector<int> rrDepths;
+  // Samplers (registry names) compared with --reference, each with every integrator; empty: the
+  // scene's.
+  std::vector<std::string> samplers;
 };
 
 double seconds(std::chrono::steady_clock::duration d) {
@@ -185,12 +190,17 @@ int runEfficiency(const SceneFile& file, const BenchArgs& args) {
                                   reference.width, reference.height, resolution.x(), resolution.y(),
                                   reference.width));
   struct Measured {
-    std::string label;  // the integrator, and its roulette depth when --rr-depth compares some
+    // The integrator, its roulette depth when --rr-depth compares some and its sampler when
+    // --sampler does.
+    std::string label;
     IntegratorSettings settings;
     std::unique_ptr<Integrator> integrator;
+    const studies::StudySampler* sampler = nullptr;
     std::vector<double> seconds, relMse;
     studies::FireflyShare fireflies;  // summed over the repeats
   };
+  const std::vector<studies::StudySampler> samplers =
+      studies::prepareSamplers(file, args.samplers, "--sampler");
   std::vector<Measured> measured;
   for (const std::string& name : args.integrators) {
     const IntegratorSettings settings = studies::studyIntegrator(file, name, args.maxBounces);
@@ -199,26 +209,35 @@ int runEfficiency(const SceneFile& file, const BenchArgs& args) {
                         "the integrator \"" + settings.type + "\" has no Russian roulette");
     const std::vector<int> depths =
         args.rrDepths.empty() ? std::vector<int>{settings.rrDepth} : args.rrDepths;
-    for (const int depth : depths) {
-      Measured m;
-      m.settings = settings;
-      m.settings.rrDepth = depth;
-      m.label = args.rrDepths.empty() ? name : fmt::format("{} rr_depth {}", name, depth);
-      m.integrator = makeIntegrator(m.settings);
-      measured.push_back(std::move(m));
-    }
+    for (const int depth : depths)
+      for (const studies::StudySampler& sampler : samplers) {
+        Measured m;
+        m.settings = settings;
+        m.settings.rrDepth = depth;
+        m.label = name;
+        if (!args.rrDepths.empty()) m.label += fmt::format(" rr_depth {}", depth);
+        if (!args.samplers.empty()) m.label += " " + sampler.type;
+        m.integrator = makeIntegrator(m.settings);
+        m.sampler = &sampler;
+        measured.push_back(std::move(m));
+      }
   }
   const double referenceRelMse = studies::referenceRelMse(reference);
-  fmt::print("scene {}: {}×{}, {} spp, {} threads, against {} (its own relMSE {:.3g})\n", file.name,
-             resolution.x(), resolution.y(), args.spp, args.threads, args.reference,
-             referenceRelMse);
+  std::string samplerNames;
+  for (const studies::StudySampler& s : samplers)
+    samplerNames += (samplerNames.empty() ? "" : ", ") + s.type;
+  fmt::print(
+      "scene {}: {}×{}, {} spp, {} threads, sampler {}, against {} (its own relMSE {:.3g})\n",
+      file.name, resolution.x(), resolution.y(), args.spp, args.threads, samplerNames,
+      args.reference, referenceRelMse);
   for (int r = 0; r < args.repeats; ++r)
     for (Measured& m : measured) {
       Film film(resolution);
       film.trackMaxima();
-      const uint64_t seed = studies::runSeed(m.settings.type, "bench", args.spp, r);
-      const studies::TimedRender t =
-          studies::timedRender(file, *m.integrator, film, args.spp, args.threads, seed);
+      const uint64_t seed =
+          studies::runSeed(m.settings.type, m.sampler->type, "bench", args.spp, r);
+      const studies::TimedRender t = studies::timedRender(
+          file, *m.sampler->prototype, *m.integrator, film, args.spp, args.threads, seed);
       m.seconds.push_back(t.wallSeconds);
       m.relMse.push_back(studies::compareToReference(film, reference).relMse);
       const studies::FireflyShare f = studies::fireflyShare(film, reference);
@@ -263,6 +282,8 @@ int run(const BenchArgs& args) {
     throw VerityError("", "--reference", "--reference and --bdpt are separate measurements");
   if (!args.rrDepths.empty() && args.reference.empty())
     throw VerityError("", "--rr-depth", "compares efficiencies, so it needs --reference");
+  if (!args.samplers.empty() && args.reference.empty())
+    throw VerityError("", "--sampler", "compares efficiencies, so it needs --reference");
   if (!args.reference.empty()) return runEfficiency(file, args);
   if (args.bdpt) return runBdpt(file, args);
   IntegratorSettings settings = studies::studyIntegrator(file, "path_tracer_nee", args.maxBounces);
@@ -336,6 +357,13 @@ void addBenchCommand(CLI::App& app, const ProcessGroup& group) {
       ->default_str("the scene's")
       ->delimiter(',')
       ->check(wholeNumber(1));
+  cmd->add_option("--sampler", args->samplers,
+                  "Samplers compared with --reference, comma-separated, each with every "
+                  "integrator, alternating, with seeds of their own (a sampler other than the "
+                  "scene's takes its keys' defaults); one of " +
+                      samplerTypeList())
+      ->default_str("the scene's")
+      ->delimiter(',');
   cmd->callback([args] { throw CLI::RuntimeError(run(*args)); });
 }
 

@@ -6,12 +6,12 @@
 
 #include "core/error.h"
 #include "film/image_io.h"
-#include "sampling/sampler.h"
 #include "validation/studies/npy_file.h"
 #include "validation/studies/reference_match.h"
 #include "validation/studies/relative_error.h"
 #include "validation/studies/run_distribution.h"
 #include "validation/studies/seeds.h"
+#include "validation/studies/study_sampler.h"
 #include "validation/studies/study_scene.h"
 #include "validation/studies/timed_render.h"
 
@@ -19,11 +19,11 @@ namespace verity::studies {
 
 namespace {
 
-std::string convergenceKey(const nlohmann::json& r) {
-  return fmt::format("{}|{}x{}|{}|{}|{}|{}|{}|{}", r.value("scene", ""), r.value("width", 0),
-                     r.value("height", 0), r.value("integrator", ""), r.value("max_bounces", 0),
-                     r.value("threads", 0), r.value("budget_type", ""), r.value("budget", 0.0),
-                     r.value("run", 0));
+std::string convergenceKey(const FieldReader& r) {
+  return fmt::format("{}|{}x{}|{}|{}|{}|{}|{}|{}|{}", r.text("scene"), r.integer("width"),
+                     r.integer("height"), r.text("integrator"), r.text("sampler"),
+                     r.integer("max_bounces"), r.integer("threads"), r.text("budget_type"),
+                     r.number("budget"), r.integer("run"));
 }
 
 }  // namespace
@@ -51,8 +51,7 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
   // comparison reports the mismatch).
   const SceneFile file =
       loadSceneAtWidth(config.scene, config.resolution > 0 ? config.resolution : reference.width);
-  requireIndependentSamples(*file.sampler, config.scene,
-                            "the convergence study's variance columns (rel_variance)");
+  const std::vector<StudySampler> samplers = prepareSamplers(file, config.samplers, "--samplers");
   std::vector<PreparedIntegrator> integrators =
       prepareIntegrators(file, config.integrators, config.maxBounces);
   const Vector2i resolution = file.scene->camera().resolution();
@@ -74,61 +73,70 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
   for (size_t ti = 0; ti < config.threads.size(); ++ti)
     for (int run = 0; run < config.runs; ++run)
       for (double budget : config.budgets)
-        for (const PreparedIntegrator& p : integrators) {
-          nlohmann::json header = recordHeader("convergence", config.scene, resolution, p.settings);
-          header.update({
-              {"threads", threadCounts[ti]},
-              {"budget_type", config.budgetType},
-              {"budget", budget},
-              {"run", run},
-          });
-          runs.push_back(
-              {header, [&, ti, run, budget, &p = p](nlohmann::json& record) {
-                 const uint64_t seed = runSeed(p.settings.type, config.budgetType, budget, run);
-                 Film film(resolution);
-                 const bool byTime = config.budgetType == "time";
-                 const TimedRender timed =
-                     timedRender(file, *p.integrator, film, byTime ? 0 : int(std::lround(budget)),
-                                 threadCounts[ti], seed, byTime ? budget : 0);
-                 const ErrorStats error = compareToReference(film, reference);
-                 record.update({
-                     {"seed", seed},
-                     {"spp", timed.stats.passes},
-                     {"wall_seconds", timed.wallSeconds},
-                     {"cpu_seconds", timed.cpuSeconds},
-                     {"rays", timed.stats.rays},
-                     {"invalid_samples", timed.stats.invalidSamples},
-                     {"rel_mse", error.relMse},
-                     {"rel_mse_epsilon", kRelEpsilon},
-                     {"rel_variance", error.relVariance},
-                     {"mean_variance", error.meanVariance},
-                     {"efficiency", 1.0 / (error.relMse * timed.wallSeconds)},
-                     {"reference", referencePath.string()},
-                     {"reference_spp", attribute("verity:spp")},
-                     {"reference_integrator", attribute("verity:integrator")},
-                     {"reference_rel_mse", referenceOwnRelMse},
-                 });
-                 record.update(provenance(machine, revision));
-                 if (config.errorImages && ti == 0 && run == 0 && budget == largestBudget) {
-                   std::filesystem::create_directories(imageDir);
-                   const std::filesystem::path npy =
-                       imageDir / fmt::format("{}_{}_{}{}.npy", sceneName, p.settings.type, budget,
-                                              config.budgetType == "spp" ? "spp" : "s");
-                   writeHalfNpy(npy, relativeErrorImage(film, reference),
-                                {size_t(film.height()), size_t(film.width())});
-                   record["error_image"] =
-                       std::filesystem::relative(npy, config.output.parent_path().empty()
-                                                          ? std::filesystem::path(".")
-                                                          : config.output.parent_path())
-                           .string();
-                 }
-                 return fmt::format(
-                     "{} threads={} {}={} run={}: {} spp, {:.3f} s wall, {:.3f} s "
-                     "CPU, relMSE {:.4g}",
-                     p.settings.type, threadCounts[ti], config.budgetType, budget, run,
-                     timed.stats.passes, timed.wallSeconds, timed.cpuSeconds, error.relMse);
-               }});
-        }
+        for (const PreparedIntegrator& p : integrators)
+          for (const StudySampler& s : samplers) {
+            nlohmann::json header =
+                recordHeader("convergence", config.scene, resolution, p.settings);
+            header.update({
+                {"sampler", s.type},
+                {"threads", threadCounts[ti]},
+                {"budget_type", config.budgetType},
+                {"budget", budget},
+                {"run", run},
+            });
+            runs.push_back(
+                {header, [&, ti, run, budget, &p = p, &s = s](nlohmann::json& record) {
+                   const uint64_t seed =
+                       runSeed(p.settings.type, s.type, config.budgetType, budget, run);
+                   Film film(resolution);
+                   const bool byTime = config.budgetType == "time";
+                   const TimedRender timed =
+                       timedRender(file, *s.prototype, *p.integrator, film,
+                                   byTime ? 0 : int(std::lround(budget)), threadCounts[ti], seed,
+                                   byTime ? budget : 0);
+                   const ErrorStats error = compareToReference(film, reference);
+                   record.update({
+                       {"seed", seed},
+                       {"spp", timed.stats.passes},
+                       {"wall_seconds", timed.wallSeconds},
+                       {"cpu_seconds", timed.cpuSeconds},
+                       {"rays", timed.stats.rays},
+                       {"invalid_samples", timed.stats.invalidSamples},
+                       {"rel_mse", error.relMse},
+                       {"rel_mse_epsilon", kRelEpsilon},
+                       {"efficiency", 1.0 / (error.relMse * timed.wallSeconds)},
+                       {"reference", referencePath.string()},
+                       {"reference_spp", attribute("verity:spp")},
+                       {"reference_integrator", attribute("verity:integrator")},
+                       {"reference_rel_mse", referenceOwnRelMse},
+                   });
+                   if (s.prototype->samplesAreIndependent())
+                     record.update({{"rel_variance", error.relVariance},
+                                    {"mean_variance", error.meanVariance}});
+                   else
+                     record["rel_variance_omitted"] = kCorrelatedSamplesNote;
+                   record.update(provenance(machine, revision));
+                   if (config.errorImages && ti == 0 && run == 0 && budget == largestBudget) {
+                     std::filesystem::create_directories(imageDir);
+                     const std::filesystem::path npy =
+                         imageDir / fmt::format("{}_{}_{}_{}{}.npy", sceneName, p.settings.type,
+                                                s.type, budget,
+                                                config.budgetType == "spp" ? "spp" : "s");
+                     writeHalfNpy(npy, relativeErrorImage(film, reference),
+                                  {size_t(film.height()), size_t(film.width())});
+                     record["error_image"] =
+                         std::filesystem::relative(npy, config.output.parent_path().empty()
+                                                            ? std::filesystem::path(".")
+                                                            : config.output.parent_path())
+                             .string();
+                   }
+                   return fmt::format(
+                       "{} {} threads={} {}={} run={}: {} spp, {:.3f} s wall, {:.3f} s "
+                       "CPU, relMSE {:.4g}",
+                       p.settings.type, s.type, threadCounts[ti], config.budgetType, budget, run,
+                       timed.stats.passes, timed.wallSeconds, timed.cpuSeconds, error.relMse);
+                 }});
+          }
   return executeRuns(group, *std::max_element(threadCounts.begin(), threadCounts.end()), output,
                      runs, log);
 }

@@ -15,6 +15,8 @@ namespace verity::studies {
 struct ConvergenceConfig {
   std::filesystem::path scene;
   std::vector<std::string> integrators;
+  // Sampler registry names, each run with every integrator; empty: the scene's own sampler.
+  std::vector<std::string> samplers;
   int runs = 4;
   std::string budgetType = "spp";  // "spp" or "time" (seconds)
   std::vector<double> budgets;
@@ -31,11 +33,15 @@ struct ConvergenceConfig {
 };
 
 // Refuses a reference of another scene (unless `force`) or resolution before rendering.
-// Runs, in this order: for each thread count, run index, budget and integrator (integrators
-// alternate innermost so that a change in the machine's load hits them alike). Runs whose
-// key (scene, resolution, integrator, max bounces, threads, budget type, budget, run) is
-// already in the output are skipped. `log` gets one line per run. Over a distributed `group`
-// the runs are dealt to its ranks (validation/studies/run_distribution.h).
+// Runs, in this order: for each thread count, run index, budget, integrator and sampler
+// (integrators and samplers alternate innermost so that a change in the machine's load hits
+// them alike); each sampler's runs have seeds of their own (seeds.h). Runs whose key (scene,
+// resolution, integrator, sampler, max bounces, threads, budget type, budget, run) is already
+// in the output are skipped; a record there lacking one of those fields is an error naming
+// the file, the record and the field. A record has rel_variance (the relative variance of the
+// image from each pixel's own samples) only for a sampler whose samples are independent;
+// others carry rel_variance_omitted, saying why. `log` gets one line per run. Over a distributed
+// `group` the runs are dealt to its ranks (validation/studies/run_distribution.h).
 StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
                                   const std::function<void(const std::string&)>& log,
                                   const ProcessGroup& group = ProcessGroup::solo());

@@ -44,8 +44,8 @@ ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup&
 
   Film film(file.scene->camera().resolution());
   const int threads = group.threadsPerRank(config.threads);
-  const TimedRender timed =
-      timedRender(file, *integrator, film, config.spp, threads, seed, 0, nullptr, group);
+  const TimedRender timed = timedRender(file, *file.sampler, *integrator, film, config.spp, threads,
+                                        seed, 0, nullptr, group);
   if (!group.isRoot()) return {};
 
   ImageChannels image = filmChannels(film, true);

@@ -22,4 +22,10 @@ uint64_t runSeed(const std::string& integrator, const std::string& budgetType, d
                     hashString(fmt::format("{}", budget)), uint64_t(run));
 }
 
+uint64_t runSeed(const std::string& integrator, const std::string& sampler,
+                 const std::string& budgetType, double budget, int run) {
+  const uint64_t seed = runSeed(integrator, budgetType, budget, run);
+  return sampler == "independent" ? seed : hashValues(seed, hashString(sampler));
+}
+
 }  // namespace verity::studies

@@ -14,7 +14,8 @@ namespace verity::studies {
 
 namespace {
 
-std::string speedupKey(const nlohmann::json& r) {
+std::string speedupKey(const FieldReader& record) {
+  const nlohmann::json& r = record.object();
   return fmt::format("{}|{}x{}|{}|{}|{}|{}|{}", r.value("scene", ""), r.value("width", 0),
                      r.value("height", 0), r.value("integrator", ""), r.value("max_bounces", 0),
                      r.value("threads", 0), r.value("spp", 0), r.value("repeat", 0));
@@ -47,7 +48,7 @@ StudyProgress runSpeedupStudy(const SpeedupConfig& config,
                const uint64_t seed = runSeed(p.settings.type, "speedup", config.spp, 0);
                Film film(resolution);
                const TimedRender timed =
-                   timedRender(file, *p.integrator, film, config.spp, threads, seed);
+                   timedRender(file, *file.sampler, *p.integrator, film, config.spp, threads, seed);
                record.update({
                    {"seed", seed},
                    {"wall_seconds", timed.wallSeconds},

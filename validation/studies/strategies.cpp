@@ -21,7 +21,8 @@ namespace verity::studies {
 
 namespace {
 
-std::string strategiesKey(const nlohmann::json& r) {
+std::string strategiesKey(const FieldReader& record) {
+  const nlohmann::json& r = record.object();
   // Records of the one-render study (before budgets and runs) read as run 0 of their spp,
   // with no path tracer.
   const std::string pathTracer =
@@ -57,8 +58,8 @@ ComponentRender renderComponents(const SceneFile& file, const Integrator& integr
       {}};
   const bool byTime = config.budgetType == "time";
   const TimedRender timed =
-      timedRender(file, integrator, r.film, byTime ? 0 : int(std::lround(budget)), threads, seed,
-                  byTime ? budget : 0, r.components.get());
+      timedRender(file, *file.sampler, integrator, r.film, byTime ? 0 : int(std::lround(budget)),
+                  threads, seed, byTime ? budget : 0, r.components.get());
   r.record = {{"integrator", settings.type},     {"seed", seed},
               {"spp", timed.stats.passes},       {"wall_seconds", timed.wallSeconds},
               {"cpu_seconds", timed.cpuSeconds}, {"invalid_samples", timed.stats.invalidSamples}};

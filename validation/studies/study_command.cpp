@@ -6,6 +6,7 @@
 #include "commands/output_paths.h"
 #include "commands/subcommand.h"
 #include "integrators/integrator_settings.h"
+#include "sampling/sampler_registry.h"
 #include "validation/studies/convergence.h"
 #include "validation/studies/json_lines.h"
 #include "validation/studies/speedup.h"
@@ -55,14 +56,23 @@ void addConvergence(CLI::App& study, const ProcessGroup& group) {
   auto noImages = std::make_shared<bool>(false);
   CLI::App* cmd = addSubcommand(
       study, "convergence",
-      "Independent seeded runs per integrator and budget: relative MSE against a reference, "
+      "Independent seeded runs per integrator, sampler and budget: relative MSE against a "
+      "reference, "
       "wall and CPU time; appended to a JSON Lines file and resumable",
       MpiUse::SplitsWork, group);
   cmd->add_option("scene", config->scene, "Scene file (.json)")->required();
   cmd->add_option("--integrator", config->integrators, "Integrators, comma-separated")
       ->required()
       ->delimiter(',');
-  cmd->add_option("--runs", config->runs, "Independent runs per integrator and budget")
+  cmd->add_option("--samplers", config->samplers,
+                  "Samplers, comma-separated, each run with every integrator and seeds of its "
+                  "own (a sampler other than the scene's takes its keys' defaults); one of " +
+                      samplerTypeList() +
+                      ". Only independent samples give the rel_variance column; other "
+                      "samplers' records leave it out")
+      ->default_str("the scene's")
+      ->delimiter(',');
+  cmd->add_option("--runs", config->runs, "Independent runs per integrator, sampler and budget")
       ->check(wholeNumber(1));
   const Budgets budgets = addBudgetOptions(cmd, "Budgets in samples per pixel, comma-separated");
   cmd->add_option("--threads", config->threads, "Thread counts, comma-separated; 0: all cores")

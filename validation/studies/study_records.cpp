@@ -26,9 +26,21 @@ std::vector<PreparedIntegrator> prepareIntegrators(const SceneFile& file,
 }
 
 StudyOutput::StudyOutput(std::filesystem::path file, const std::string& study, Key key)
-    : file_(std::move(file)), read_(readJsonLinesFile(file_)), key_(key) {
-  for (const nlohmann::json& r : read_.records)
-    if (r.value("study", "") == study) done_.insert(key_(r));
+    : file_(std::move(file)),
+      fileName_(file_.string()),
+      read_(readJsonLinesFile(file_)),
+      key_(key) {
+  for (size_t i = 0; i < read_.records.size(); ++i)
+    if (read_.records[i].value("study", "") == study)
+      done_.insert(this->key(read_.records[i], fmt::format("record {}", i + 1)));
+}
+
+std::string StudyOutput::key(const nlohmann::json& record, const std::string& where) const {
+  return key_(FieldReader(record, fileName_, where));
+}
+
+bool StudyOutput::has(const nlohmann::json& record) const {
+  return done_.count(key(record, "a new record")) > 0;
 }
 
 void StudyOutput::repairTruncatedLine(const std::function<void(const std::string&)>& log) {
@@ -44,7 +56,7 @@ void StudyOutput::repairTruncatedLine(const std::function<void(const std::string
 
 void StudyOutput::append(const nlohmann::json& record) {
   appendJsonLine(file_, record);
-  done_.insert(key_(record));
+  done_.insert(key(record, "a new record"));
 }
 
 void checkBudgets(const std::string& type, const std::vector<double>& budgets) {

@@ -14,6 +14,7 @@
 #include "scene/scene_loader.h"
 #include "validation/studies/json_lines.h"
 #include "validation/studies/machine_info.h"
+#include "validation/studies/record_fields.h"
 
 namespace verity::studies {
 
@@ -36,11 +37,13 @@ std::vector<PreparedIntegrator> prepareIntegrators(const SceneFile& file,
 // that a resumed study skips what it has done.
 class StudyOutput {
  public:
-  using Key = std::string (*)(const nlohmann::json&);
+  // A record's key, from typed reads (record_fields.h), so that a record lacking a field of
+  // the key is an error naming the file, the record and the field.
+  using Key = std::string (*)(const FieldReader&);
   // Reads the records already in `file`; a corrupt line other than a truncated last one is
   // an error naming the file and the line.
   StudyOutput(std::filesystem::path file, const std::string& study, Key key);
-  bool has(const nlohmann::json& record) const { return done_.count(key_(record)) > 0; }
+  bool has(const nlohmann::json& record) const;
   // Removes a truncated last line (a run cut off while writing its record; that run is not
   // counted as done, so it is redone) and says so in `log`. Before appending.
   void repairTruncatedLine(const std::function<void(const std::string&)>& log);
@@ -48,7 +51,10 @@ class StudyOutput {
   void append(const nlohmann::json& record);
 
  private:
+  std::string key(const nlohmann::json& record, const std::string& where) const;
+
   std::filesystem::path file_;
+  std::string fileName_;
   JsonLinesFile read_;
   Key key_;
   std::set<std::string> done_;

@@ -6,9 +6,11 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 #include <tuple>
 
 #include "validation/studies/fit.h"
+#include "validation/studies/study_sampler.h"
 #include "validation/studies/summary_records.h"
 
 namespace verity::studies {
@@ -86,13 +88,13 @@ std::string accuracyText(const nlohmann::json& a) {
   return status;
 }
 
-// The efficiencies of the convergence groups: (scene, w, h, budget type, threads) ->
+// The efficiencies of the convergence groups: (scene, w, h, sampler, budget type, threads) ->
 // integrator -> efficiency.
-using EfficiencyKey = std::tuple<std::string, int, int, std::string, int>;
+using EfficiencyKey = std::tuple<std::string, int, int, std::string, std::string, int>;
 using Efficiencies = std::map<EfficiencyKey, std::map<std::string, double>>;
-// The time budgets of the convergence groups: (scene, w, h, threads, seconds) -> integrator ->
-// that budget's summary.
-using EqualTimeKey = std::tuple<std::string, int, int, int, double>;
+// The time budgets of the convergence groups: (scene, w, h, sampler, threads, seconds) ->
+// integrator -> that budget's summary.
+using EqualTimeKey = std::tuple<std::string, int, int, std::string, int, double>;
 using EqualTimes = std::map<EqualTimeKey, nlohmann::json>;
 
 // The summary of the runs of one convergence group at one budget.
@@ -103,7 +105,7 @@ nlohmann::json budgetSummary(double budget, const std::vector<const ConvergenceR
     t.push_back(r->wallSeconds);
     c.push_back(r->cpuSeconds);
     s.push_back(r->spp);
-    var.push_back(r->relVariance);
+    if (r->relVariance) var.push_back(*r->relVariance);
     eff.push_back(1.0 / (r->relMse * r->wallSeconds));
   }
   return {{"budget", budget},
@@ -114,15 +116,15 @@ nlohmann::json budgetSummary(double budget, const std::vector<const ConvergenceR
           {"mean_spp", mean(s)},
           {"runs", runs.size()},
           {"median_rel_mse", median(e)},
-          {"median_rel_variance", median(var)},
+          {"median_rel_variance", number(median(var))},
           {"median_wall_seconds", median(t)},
           {"median_cpu_seconds", median(c)},
           {"median_spp", median(s)},
           {"median_efficiency", median(eff)}};
 }
 
-// The summary of one convergence group (runs of one scene, resolution, integrator, max
-// bounces, threads and budget type): its fits, time to accuracy, efficiency and budgets.
+// The summary of one convergence group (runs of one scene, resolution, integrator, sampler,
+// max bounces, threads and budget type): its fits, time to accuracy, efficiency and budgets.
 nlohmann::json convergenceGroup(const std::vector<const ConvergenceRun*>& runs, double confidence) {
   const ConvergenceRun& first = *runs.front();
   std::vector<double> time, spp, err;
@@ -148,45 +150,50 @@ nlohmann::json convergenceGroup(const std::vector<const ConvergenceRun*>& runs, 
   nlohmann::json accuracy = nlohmann::json::array();
   for (double target : kAccuracyTargets)
     accuracy.push_back(timeToAccuracy(timeOfMeans, meanErr, target));
-  return {{"scene", first.scene},
-          {"width", first.width},
-          {"height", first.height},
-          {"integrator", first.integrator},
-          {"max_bounces", first.maxBounces},
-          {"threads", first.threads},
-          {"budget_type", first.budgetType},
-          {"runs", runs.size()},
-          {"rel_mse_epsilon", first.relMseEpsilon},
-          {"reference_rel_mse", first.referenceRelMse},
-          {"fit_time", fitJson(fitLogLog(time, err, confidence))},
-          {"fit_spp", fitJson(fitLogLog(spp, err, confidence))},
-          {"fit_spp_of_means", fitJson(fitLogLog(meanSpp, meanErr, confidence))},
-          {"fit_time_of_means", fitJson(timeOfMeans)},
-          {"time_to_accuracy", accuracy},
-          {"efficiency", budgets.back()["median_efficiency"].get<double>()},
-          {"budgets", budgets}};
+  nlohmann::json group = {{"scene", first.scene},
+                          {"width", first.width},
+                          {"height", first.height},
+                          {"integrator", first.integrator},
+                          {"sampler", first.sampler},
+                          {"max_bounces", first.maxBounces},
+                          {"threads", first.threads},
+                          {"budget_type", first.budgetType},
+                          {"runs", runs.size()},
+                          {"rel_mse_epsilon", first.relMseEpsilon},
+                          {"reference_rel_mse", first.referenceRelMse},
+                          {"fit_time", fitJson(fitLogLog(time, err, confidence))},
+                          {"fit_spp", fitJson(fitLogLog(spp, err, confidence))},
+                          {"fit_spp_of_means", fitJson(fitLogLog(meanSpp, meanErr, confidence))},
+                          {"fit_time_of_means", fitJson(timeOfMeans)},
+                          {"time_to_accuracy", accuracy},
+                          {"efficiency", budgets.back()["median_efficiency"].get<double>()},
+                          {"budgets", budgets}};
+  if (!first.relVariance) group["rel_variance_omitted"] = kCorrelatedSamplesNote;
+  return group;
 }
 
-// The convergence runs grouped by (scene, resolution, integrator, max bounces, threads,
-// budget type), in the order of those keys.
+// The convergence runs grouped by (scene, resolution, integrator, sampler, max bounces,
+// threads, budget type), in the order of those keys.
 std::vector<std::vector<const ConvergenceRun*>> convergenceGroups(
     const std::vector<ConvergenceRun>& runs) {
-  using GroupKey = std::tuple<std::string, int, int, std::string, int, int, std::string>;
+  using GroupKey =
+      std::tuple<std::string, int, int, std::string, std::string, int, int, std::string>;
   std::map<GroupKey, std::vector<const ConvergenceRun*>> groups;
   for (const ConvergenceRun& r : runs)
-    groups[{r.scene, r.width, r.height, r.integrator, r.maxBounces, r.threads, r.budgetType}]
+    groups[{r.scene, r.width, r.height, r.integrator, r.sampler, r.maxBounces, r.threads,
+            r.budgetType}]
         .push_back(&r);
   std::vector<std::vector<const ConvergenceRun*>> out;
   for (auto& [key, members] : groups) out.push_back(std::move(members));
   return out;
 }
 
-// Per (scene, resolution, budget type, threads): the most efficient integrator and its ratio
-// to every other.
+// Per (scene, resolution, sampler, budget type, threads): the most efficient integrator and
+// its ratio to every other.
 nlohmann::json bestEntries(const Efficiencies& efficiencies) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& [key, effs] : efficiencies) {
-    const auto& [scene, w, h, budgetType, threads] = key;
+    const auto& [scene, w, h, sampler, budgetType, threads] = key;
     std::string best;
     double bestEff = -1;
     for (const auto& [name, e] : effs)
@@ -196,6 +203,7 @@ nlohmann::json bestEntries(const Efficiencies& efficiencies) {
     out.push_back({{"scene", scene},
                    {"width", w},
                    {"height", h},
+                   {"sampler", sampler},
                    {"budget_type", budgetType},
                    {"threads", threads},
                    {"integrator", best},
@@ -208,10 +216,11 @@ nlohmann::json bestEntries(const Efficiencies& efficiencies) {
 nlohmann::json equalTimeEntries(const EqualTimes& equalTime) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& [key, byIntegrator] : equalTime) {
-    const auto& [scene, w, h, threads, seconds] = key;
+    const auto& [scene, w, h, sampler, threads, seconds] = key;
     out.push_back({{"scene", scene},
                    {"width", w},
                    {"height", h},
+                   {"sampler", sampler},
                    {"threads", threads},
                    {"seconds", seconds},
                    {"integrators", byIntegrator}});
@@ -309,11 +318,11 @@ nlohmann::json summarize(const SummaryRecords& records, double confidence) {
   for (const std::vector<const ConvergenceRun*>& runs : convergenceGroups(records.convergence)) {
     nlohmann::json g = convergenceGroup(runs, confidence);
     const ConvergenceRun& r = *runs.front();
-    efficiencies[{r.scene, r.width, r.height, r.budgetType, r.threads}][r.integrator] =
+    efficiencies[{r.scene, r.width, r.height, r.sampler, r.budgetType, r.threads}][r.integrator] =
         g["efficiency"].get<double>();
     if (r.budgetType == "time")
       for (const nlohmann::json& b : g["budgets"])
-        equalTime[{r.scene, r.width, r.height, r.threads, b["budget"].get<double>()}]
+        equalTime[{r.scene, r.width, r.height, r.sampler, r.threads, b["budget"].get<double>()}]
                  [r.integrator] = {{"mean_rel_mse", b["mean_rel_mse"]},
                                    {"rel_mse_std_error", b["rel_mse_std_error"]},
                                    {"mean_spp", b["mean_spp"]},
@@ -342,13 +351,20 @@ std::string summaryText(const nlohmann::json& summary) {
         "Convergence ({}% confidence intervals of the log-log slopes; relMSE epsilon {})\n",
         int(std::lround(100 * summary["confidence"].get<double>())),
         summary["convergence"][0]["rel_mse_epsilon"].get<double>());
-    s += fmt::format("{:<18} {:<16} {:>7} {:>5} {:>28} {:>28} {:>11}\n", "scene", "integrator",
-                     "threads", "runs", "slope vs time", "slope vs spp", "efficiency");
+    s += fmt::format("{:<18} {:<16} {:<11} {:>7} {:>5} {:>28} {:>28} {:>11}\n", "scene",
+                     "integrator", "sampler", "threads", "runs", "slope vs time", "slope vs spp",
+                     "efficiency");
     for (const nlohmann::json& g : summary["convergence"])
-      s += fmt::format("{:<18} {:<16} {:>7} {:>5} {:>28} {:>28} {:>11.4g}\n",
+      s += fmt::format("{:<18} {:<16} {:<11} {:>7} {:>5} {:>28} {:>28} {:>11.4g}\n",
                        g["scene"].get<std::string>(), g["integrator"].get<std::string>(),
-                       g["threads"].get<int>(), g["runs"].get<size_t>(), fmtFit(g["fit_time"]),
-                       fmtFit(g["fit_spp"]), g["efficiency"].get<double>());
+                       g["sampler"].get<std::string>(), g["threads"].get<int>(),
+                       g["runs"].get<size_t>(), fmtFit(g["fit_time"]), fmtFit(g["fit_spp"]),
+                       g["efficiency"].get<double>());
+    std::set<std::string> omitted;
+    for (const nlohmann::json& g : summary["convergence"])
+      if (g.contains("rel_variance_omitted")) omitted.insert(g["sampler"].get<std::string>());
+    for (const std::string& sampler : omitted)
+      s += fmt::format("no rel_variance for the {} sampler: {}\n", sampler, kCorrelatedSamplesNote);
   }
   bool accuracyHeader = false;
   for (const nlohmann::json& g : summary["convergence"]) {
@@ -361,22 +377,24 @@ std::string summaryText(const nlohmann::json& summary) {
     std::string cells;
     for (const nlohmann::json& a : g["time_to_accuracy"])
       cells += fmt::format("  {:g}: {}", a["target_rel_mse"].get<double>(), accuracyText(a));
-    s += fmt::format("{:<18} {:<16} {:>2} threads {}\n", g["scene"].get<std::string>(),
-                     g["integrator"].get<std::string>(), g["threads"].get<int>(), cells);
+    s += fmt::format("{:<18} {:<16} {:<11} {:>2} threads {}\n", g["scene"].get<std::string>(),
+                     g["integrator"].get<std::string>(), g["sampler"].get<std::string>(),
+                     g["threads"].get<int>(), cells);
   }
   for (const nlohmann::json& e : summary.value("equal_time", nlohmann::json::array())) {
     std::string cells;
     for (const auto& [name, v] : e["integrators"].items())
       cells += fmt::format("{}{} {:.4g}", cells.empty() ? "" : ", ", name,
                            v["mean_rel_mse"].get<double>());
-    s += fmt::format("equal time on {} ({} threads, {:g} s): relMSE {}\n",
-                     e["scene"].get<std::string>(), e["threads"].get<int>(),
-                     e["seconds"].get<double>(), cells);
+    s += fmt::format("equal time on {} ({} sampler, {} threads, {:g} s): relMSE {}\n",
+                     e["scene"].get<std::string>(), e["sampler"].get<std::string>(),
+                     e["threads"].get<int>(), e["seconds"].get<double>(), cells);
   }
   for (const nlohmann::json& b : summary["best"]) {
-    s += fmt::format("most efficient on {} ({} threads, {} budgets): {}",
-                     b["scene"].get<std::string>(), b["threads"].get<int>(),
-                     b["budget_type"].get<std::string>(), b["integrator"].get<std::string>());
+    s += fmt::format("most efficient on {} ({} sampler, {} threads, {} budgets): {}",
+                     b["scene"].get<std::string>(), b["sampler"].get<std::string>(),
+                     b["threads"].get<int>(), b["budget_type"].get<std::string>(),
+                     b["integrator"].get<std::string>());
     std::string others;
     for (const auto& [name, ratio] : b["times_better_than"].items())
       if (name != b["integrator"].get<std::string>())

@@ -11,17 +11,19 @@
 
 namespace verity::studies {
 
-// Groups "convergence" records by (scene, resolution, integrator, max bounces, threads, budget
-// type) and fits log relMSE against log wall time and against log spp over all runs (every
-// run is one point), and log of the mean relMSE over the runs at each budget against log spp
+// Groups "convergence" records by (scene, resolution, integrator, sampler, max bounces,
+// threads, budget type) and fits log relMSE against log wall time and against log spp over all runs
+// (every run is one point), and log of the mean relMSE over the runs at each budget against log spp
 // ("fit_spp_of_means"): the per-run fit follows E[log relMSE], which for a heavy-tailed
 // estimator rises towards log E[relMSE] as the budget grows (rare large samples are missed
 // more often at small budgets), so it can be flatter than −1 for an unbiased estimator; the
 // mean over runs is unbiased for E[relMSE] = A/spp + B whatever the tails. Efficiency = 1 / (relMSE
 // · wall time) (Veach 1997, section 2.4: the efficiency of an estimator is 1 / (variance · time));
 // a group's efficiency is the median over its runs at its largest budget, where fixed per-render
-// costs weigh least. Per (scene, resolution, budget type, threads), "best" names the most efficient
-// integrator and its ratio to every other. "speedup" records give, per (scene, integrator, spp),
+// costs weigh least. Per (scene, resolution, sampler, budget type, threads), "best" names the most
+// efficient integrator and its ratio to every other. A group of a sampler whose samples are
+// correlated has no rel_variance: its budgets' median_rel_variance is null and the group's
+// "rel_variance_omitted" says why. "speedup" records give, per (scene, integrator, spp),
 // the median wall time per thread count, speed-up = median time at the fewest threads / median
 // time, parallel efficiency = speed-up · fewest threads / threads.
 // "strategies" records (one BDPT render each) give, per render, the strategies ranked by
@@ -31,7 +33,7 @@ inline constexpr double kCarriedShare = 0.9;
 // each target, from the line fitted to log mean relMSE against log mean wall time over the
 // budgets (the mean over runs is unbiased for E[relMSE]), with the inverse-prediction
 // interval of that time at the summary's confidence. "equal_time": per (scene, resolution,
-// threads, time budget), every integrator's mean relMSE and its standard error.
+// sampler, threads, time budget), every integrator's mean relMSE and its standard error.
 inline constexpr double kAccuracyTargets[] = {1e-2, 1e-3};
 nlohmann::json summarize(const SummaryRecords& records, double confidence = 0.95);
 // The same of the records read from `file` (summary_records.h: a record that lacks a key the

@@ -3,54 +3,13 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "sampling/sampler_registry.h"
+#include "validation/studies/record_fields.h"
+#include "validation/studies/study_sampler.h"
 
 namespace verity::studies {
 
 namespace {
-
-// Reads the required fields of one JSON object, naming the file, the record and the key in
-// its errors.
-class FieldReader {
- public:
-  FieldReader(const nlohmann::json& object, const std::string& file, std::string where)
-      : object_(object), file_(file), where_(std::move(where)) {}
-
-  const nlohmann::json& field(const char* key) const {
-    const auto it = object_.find(key);
-    if (it == object_.end()) fail(key, "missing key");
-    return *it;
-  }
-  std::string text(const char* key) const {
-    const nlohmann::json& v = field(key);
-    if (!v.is_string()) fail(key, "expected a string, found " + v.dump());
-    return v.get<std::string>();
-  }
-  double number(const char* key) const {
-    const nlohmann::json& v = field(key);
-    if (!v.is_number()) fail(key, "expected a number, found " + v.dump());
-    return v.get<double>();
-  }
-  int integer(const char* key) const {
-    const nlohmann::json& v = field(key);
-    if (!v.is_number_integer()) fail(key, "expected an integer, found " + v.dump());
-    return v.get<int>();
-  }
-  const nlohmann::json& array(const char* key) const {
-    const nlohmann::json& v = field(key);
-    if (!v.is_array()) fail(key, "expected an array, found " + v.dump());
-    return v;
-  }
-  const std::string& where() const { return where_; }
-
- private:
-  [[noreturn]] void fail(const char* key, const std::string& problem) const {
-    throw VerityError(file_, fmt::format("{}, \"{}\"", where_, key), problem);
-  }
-
-  const nlohmann::json& object_;
-  const std::string& file_;
-  std::string where_;
-};
 
 ConvergenceRun convergenceRun(const FieldReader& r) {
   ConvergenceRun c;
@@ -58,6 +17,11 @@ ConvergenceRun convergenceRun(const FieldReader& r) {
   c.width = r.integer("width");
   c.height = r.integer("height");
   c.integrator = r.text("integrator");
+  c.sampler = r.text("sampler");
+  const std::optional<bool> independent = samplerSamplesAreIndependent(c.sampler);
+  if (!independent)
+    r.fail("sampler",
+           "unknown sampler \"" + c.sampler + "\" (expected one of " + samplerTypeList() + ")");
   c.maxBounces = r.integer("max_bounces");
   c.threads = r.integer("threads");
   c.budgetType = r.text("budget_type");
@@ -66,7 +30,7 @@ ConvergenceRun convergenceRun(const FieldReader& r) {
   c.wallSeconds = r.number("wall_seconds");
   c.cpuSeconds = r.number("cpu_seconds");
   c.relMse = r.number("rel_mse");
-  c.relVariance = r.number("rel_variance");
+  if (*independent) c.relVariance = r.number("rel_variance");
   c.relMseEpsilon = r.number("rel_mse_epsilon");
   c.referenceRelMse = r.number("reference_rel_mse");
   return c;

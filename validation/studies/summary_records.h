@@ -12,10 +12,12 @@ namespace verity::studies {
 
 // One render of a convergence study.
 struct ConvergenceRun {
-  std::string scene, integrator, budgetType;
+  std::string scene, integrator, sampler, budgetType;
   int width = 0, height = 0, maxBounces = 0, threads = 0, spp = 0;
-  double budget = 0, wallSeconds = 0, cpuSeconds = 0, relMse = 0, relVariance = 0;
+  double budget = 0, wallSeconds = 0, cpuSeconds = 0, relMse = 0;
   double relMseEpsilon = 0, referenceRelMse = 0;
+  // Required where the sampler's samples are independent; none otherwise (convergence.h).
+  std::optional<double> relVariance;
 };
 
 // One timed render of a speed-up study.

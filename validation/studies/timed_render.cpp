@@ -27,8 +27,9 @@ double cpuNow() {
 
 }  // namespace
 
-TimedRender timedRender(const SceneFile& file, const Integrator& integrator, Film& film, int spp,
-                        int threads, uint64_t seed, double timeLimit, ComponentImages* components,
+TimedRender timedRender(const SceneFile& file, const Sampler& prototype,
+                        const Integrator& integrator, Film& film, int spp, int threads,
+                        uint64_t seed, double timeLimit, ComponentImages* components,
                         const ProcessGroup& group) {
   if (group.distributed() && timeLimit > 0)
     throw VerityError("", "--time", "a time-limited render cannot be split over MPI ranks");
@@ -38,7 +39,7 @@ TimedRender timedRender(const SceneFile& file, const Integrator& integrator, Fil
   options.samplesPerPixel = timeLimit > 0 ? (1 << 24) : spp;
   std::atomic<bool> cancel{false};
   options.cancel = &cancel;
-  std::unique_ptr<Sampler> sampler = file.sampler->clone();
+  std::unique_ptr<Sampler> sampler = prototype.clone();
   sampler->setSeed(seed);
 
   // With a time limit, a watchdog raises the cancel flag, which render() checks between

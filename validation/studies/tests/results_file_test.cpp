@@ -32,8 +32,8 @@ std::string readAll(const fs::path& file) {
 
 const char* kRecord = R"({"study": "convergence", "run": 0})";
 
-std::string keyOf(const nlohmann::json& r) {
-  return std::to_string(r.value("run", -1));
+std::string keyOf(const FieldReader& r) {
+  return std::to_string(r.integer("run"));
 }
 
 TEST(ResultsFile, CorruptLineInTheMiddleNamesFileAndLine) {

@@ -21,6 +21,7 @@ nlohmann::json run(const std::string& integrator, double budget, double seconds,
           {"width", 16},
           {"height", 16},
           {"integrator", integrator},
+          {"sampler", "independent"},
           {"max_bounces", 5},
           {"threads", 2},
           {"budget_type", "time"},
@@ -96,7 +97,7 @@ TEST(StudySummary, EqualTimeComparesEveryIntegratorAtEachBudget) {
 // A record that lacks a key the summary reads, or spells it wrong, is an error naming the
 // file, the record and the key, not a run of relative MSE 0.
 TEST(StudySummary, AMissingKeyIsAnErrorNamingTheFileRecordAndKey) {
-  for (const char* key : {"rel_mse", "wall_seconds", "budget", "threads", "scene"}) {
+  for (const char* key : {"rel_mse", "wall_seconds", "budget", "threads", "scene", "sampler"}) {
     std::vector<nlohmann::json> rs = records();
     rs[2].erase(key);
     EXPECT_EQ(errorOf([&] { summarize(rs, "runs.jsonl"); }),
