@@ -8,7 +8,7 @@
 // error, of the order of its estimated relative MSE. With a reference of 4096 spp against
 // budgets of at most 32 spp, B/(A/32) ≈ 32/4096 < 1%, which moves the slope by less than
 // log(1.008)/log(16) ≈ 0.003, far inside the interval below.
-// The runs are seeded by (integrator, budget, run) and renders are bit-identical for any
+// The runs are seeded by (integrator, sampler, budget, run) and renders are bit-identical for any
 // thread count, so the test's outcome is deterministic; its statistical content is that the
 // 95% interval of an unbiased estimator covers −1 with probability 0.95.
 #include <gtest/gtest.h>
