@@ -9,6 +9,8 @@
 //     Both sides are batch means (batch_regions.h): ours from independent batches, pbrt-v4's
 //     from its renders, so the reference's own noise enters through its renders' spread
 //     (df = renders − 1).
+//   - Our renders take the samplers independent, halton and sobol in turn along the scenes and
+//     integrators (suite_samplers.h).
 //   - One Holm family over every test of every scene and integrator: family-wise level 1%.
 //   - Each comparison's relative difference of the whole image's mean, per channel, with its
 //     standard error, is printed for the README's table.
@@ -67,13 +69,17 @@ std::vector<std::filesystem::path> pbrtRenders(const std::string& scene) {
 TEST(Pbrt4Crosscheck, OurIntegratorsAgreeWithPbrt4) {
   const PeerComparison setup{"pbrt-v4", "pbrt-v4 ", kTileSize, kBatches, kBatchSpp};
   ComparisonFamily family(kFamilyWiseLevel);
-  fmt::print("| scene | integrator | image mean against pbrt-v4, R / G / B (± 1 s.e.) |\n");
-  for (const Case& c : kCases) {
+  fmt::print(
+      "| scene | integrator | sampler | image mean against pbrt-v4, R / G / B (± 1 s.e.) |\n");
+  for (size_t s = 0; s < std::size(kCases); ++s) {
+    const Case& c = kCases[s];
     const std::vector<std::filesystem::path> renders = pbrtRenders(c.scene);
     ASSERT_EQ(renders.size(), 16u) << c.scene << ": pbrt-v4 renders missing";
-    const SceneFile file =
-        loadScene(kSource / "scenes" / "pbrt-v4" / (std::string(c.scene) + ".json"));
-    EXPECT_EQ(compareWithPeer(setup, file, c.scene, renders, c.integrators, family), 0u)
+    const std::filesystem::path scene =
+        kSource / "scenes" / "pbrt-v4" / (std::string(c.scene) + ".json");
+    EXPECT_EQ(
+        compareWithPeer(setup, loadScene(scene), int(s), c.scene, renders, c.integrators, family),
+        0u)
         << c.scene << ": invalid samples";
   }
   EXPECT_EQ(family.decide("against pbrt-v4").rejections, 0);

@@ -6,6 +6,8 @@
 //   - Per 16×16 tile and channel, a Welch t-test of our mean against pbrt's. Both sides are
 //     batch means (batch_regions.h): ours from independent batches, pbrt's from its renders,
 //     so the reference's own noise enters through its renders' spread (df = renders − 1).
+//   - Our renders take the samplers independent, halton and sobol in turn along the scenes and
+//     integrators (suite_samplers.h).
 //   - One Holm family over every test of every scene and integrator: family-wise level 1%.
 //   - Each comparison's relative difference of the whole image's mean, per channel, with its
 //     standard error (the whole image as one batch region on both sides), is printed for the
@@ -49,14 +51,18 @@ const Case kCases[] = {
 TEST(PbrtCrosscheck, OurIntegratorsAgreeWithPbrt) {
   const PeerComparison setup{"pbrt-v3", "", kTileSize, kBatches, kBatchSpp};
   ComparisonFamily family(kFamilyWiseLevel);
-  fmt::print("| scene | integrator | image mean against pbrt-v3, R / G / B (± 1 s.e.) |\n");
-  for (const Case& c : kCases) {
+  fmt::print(
+      "| scene | integrator | sampler | image mean against pbrt-v3, R / G / B (± 1 s.e.) |\n");
+  for (size_t s = 0; s < std::size(kCases); ++s) {
+    const Case& c = kCases[s];
     const std::vector<std::filesystem::path> renders =
         peerRenders(kSource / "references" / "crosscheck" / c.scene, "pbrt-seed");
     ASSERT_EQ(renders.size(), 8u) << c.scene << ": pbrt renders missing";
-    const SceneFile file =
-        loadScene(kSource / "scenes" / "crosscheck" / (std::string(c.scene) + ".json"));
-    EXPECT_EQ(compareWithPeer(setup, file, c.scene, renders, c.integrators, family), 0u)
+    const std::filesystem::path scene =
+        kSource / "scenes" / "crosscheck" / (std::string(c.scene) + ".json");
+    EXPECT_EQ(
+        compareWithPeer(setup, loadScene(scene), int(s), c.scene, renders, c.integrators, family),
+        0u)
         << c.scene << ": invalid samples";
   }
   EXPECT_EQ(family.decide("against pbrt-v3").rejections, 0);

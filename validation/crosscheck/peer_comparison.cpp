@@ -8,6 +8,7 @@
 #include "film/image_io.h"
 #include "validation/batch_regions.h"
 #include "validation/studies/timed_render.h"
+#include "validation/suite_samplers.h"
 
 namespace verity::validation {
 
@@ -40,7 +41,7 @@ std::vector<std::filesystem::path> peerRenders(const std::filesystem::path& fold
   return renders;
 }
 
-uint64_t compareWithPeer(const PeerComparison& setup, const SceneFile& file,
+uint64_t compareWithPeer(const PeerComparison& setup, SceneFile file, int sceneIndex,
                          const std::string& scene,
                          const std::vector<std::filesystem::path>& renders,
                          const std::vector<const char*>& integrators, ComparisonFamily& family) {
@@ -57,15 +58,19 @@ uint64_t compareWithPeer(const PeerComparison& setup, const SceneFile& file,
     peerImage.addBatch(image);
   }
   uint64_t invalid = 0;
-  for (const char* integratorName : integrators) {
-    const std::string key = fmt::format("{}{} {}", setup.keyPrefix, scene, integratorName);
+  for (size_t i = 0; i < integrators.size(); ++i) {
+    const char* integratorName = integrators[i];
+    const char* sampler = suiteSampler(sceneIndex, int(i));
+    useSampler(file, sampler, setup.batchSpp);
+    const std::string key =
+        fmt::format("{}{} {} {}", setup.keyPrefix, scene, integratorName, sampler);
     BatchRegions ours(regionOf, tiles, key), oursImage(whole, 1, key + " image");
     invalid += studies::renderBatches(file, integratorName, -1, setup.batches, setup.batchSpp, key,
                                       [&](const Film& film) {
                                         ours.addBatch(film);
                                         oursImage.addBatch(film);
                                       });
-    fmt::print("| {} | {} | {} |\n", scene, integratorName,
+    fmt::print("| {} | {} | {} | {} |\n", scene, integratorName, sampler,
                relativeDifference(peerImage.statistics(), oursImage.statistics()));
     family.add(key, peer.statistics(), ours.statistics());
   }

@@ -26,10 +26,11 @@ struct PeerComparison {
   int batchSpp = 16;
 };
 
-// Renders each integrator of `scene` in batches, adds its per-tile tests against the peer's
-// renders to `family` and prints a table row with the whole image's relative difference per
-// channel (± 1 standard error). Returns the number of invalid samples over all integrators.
-uint64_t compareWithPeer(const PeerComparison& setup, const SceneFile& file,
+// Renders each integrator of `scene` in batches, with the sampler that the case (sceneIndex,
+// integrator's index) takes in turn (suite_samplers.h), adds its per-tile tests against the
+// peer's renders to `family` and prints a table row with the whole image's relative difference
+// per channel (± 1 standard error). Returns the number of invalid samples over all integrators.
+uint64_t compareWithPeer(const PeerComparison& setup, SceneFile file, int sceneIndex,
                          const std::string& scene,
                          const std::vector<std::filesystem::path>& renders,
                          const std::vector<const char*>& integrators, ComparisonFamily& family);

@@ -8,6 +8,9 @@
 //     original's, from batch means (batch_regions.h: splats correlate the pixels of a pass);
 //     the mirror image is compared tile by mirrored tile. One Holm family over every test of
 //     every scene, integrator and motion: family-wise level 1%.
+//   - Each integrator renders a scene, original and moved, with the sampler that its place
+//     takes in turn (suite_samplers.h: independent, halton, sobol along the scenes and the
+//     integrators).
 //   - Power: cornell-box moved onto the coordinate planes and rendered with more samples by
 //     path_tracer_nee must be found different when made 1% brighter, and agree when not.
 // Seeds are fixed by the names of the scene, integrator and motion (hashString), never tuned.
@@ -28,6 +31,7 @@
 #include "validation/studies/seeds.h"
 #include "validation/studies/study_scene.h"
 #include "validation/studies/timed_render.h"
+#include "validation/suite_samplers.h"
 
 namespace verity::validation {
 namespace {
@@ -82,10 +86,11 @@ Scene prepare(const std::filesystem::path& file, int width) {
   return s;
 }
 
-// The scene moved, rendered, against the original's batches.
+// The scene moved, rendered with the original's sampler, against the original's batches.
 BatchRegions renderMoved(const Scene& s, const RigidMotion& motion, const std::string& integrator,
                          int batches, int spp, const std::string& key) {
-  const SceneFile moved = loadSceneText(moveScene(s.json, motion).dump(), s.file);
+  SceneFile moved = loadSceneText(moveScene(s.json, motion).dump(), s.file);
+  moved.sampler = s.loaded.sampler->clone();
   return renderBatches(moved, integrator, motion.mirrors ? s.mirroredRegionOf : s.regionOf, s.tiles,
                        batches, spp, key);
 }
@@ -94,15 +99,21 @@ TEST(RigidMotion, ImagesDoNotChange) {
   const auto start = std::chrono::steady_clock::now();
   ComparisonFamily family(kFamilyWiseLevel);
   int renders = 0;
-  for (const std::filesystem::path& file : studies::shippedScenes(kScenes)) {
-    const Scene s = prepare(file, kWidth);
+  const std::vector<std::filesystem::path> files = studies::shippedScenes(kScenes);
+  for (size_t f = 0; f < files.size(); ++f) {
+    const std::filesystem::path& file = files[f];
+    Scene s = prepare(file, kWidth);
     const std::string name = studies::shippedSceneName(file);
     const std::vector<RigidMotion> motions = standardMotions(*s.loaded.scene);
     std::string names;
     for (const RigidMotion& motion : motions) names += " " + motion.name;
     fmt::print("{}:{}\n", name, names);
-    for (const std::string& integrator : radianceIntegrators()) {
-      const std::string key = fmt::format("{} {}", name, integrator);
+    const std::vector<std::string> integrators = radianceIntegrators();
+    for (size_t i = 0; i < integrators.size(); ++i) {
+      const std::string& integrator = integrators[i];
+      const char* sampler = suiteSampler(int(f), int(i));
+      useSampler(s.loaded, sampler, kBatchSpp);
+      const std::string key = fmt::format("{} {} {}", name, integrator, sampler);
       const BatchRegions original = renderBatches(s.loaded, integrator, s.regionOf, s.tiles,
                                                   kBatches, kBatchSpp, key + " original");
       const PixelStatistics reference = original.statistics();

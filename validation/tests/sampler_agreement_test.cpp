@@ -14,11 +14,10 @@
 
 #include <filesystem>
 
-#include "sampling/sampler.h"
-#include "sampling/sampler_registry.h"
 #include "scene/scene_at_width.h"
 #include "tile_batches.h"
 #include "validation/comparison_family.h"
+#include "validation/suite_samplers.h"
 
 namespace verity::validation {
 namespace {
@@ -33,10 +32,7 @@ constexpr double kFamilyWiseLevel = 0.01;
 SceneFile sceneWithSampler(const std::string& sampler) {
   SceneFile file = loadSceneAtWidth(
       std::filesystem::path(VERITY_SOURCE_DIR) / "scenes" / "cornell-box.json", kWidth);
-  const SamplerType* type = findSamplerType(sampler);
-  if (!type) throw std::logic_error("no sampler type " + sampler);
-  file.sampler = type->build(nullptr);
-  file.sampler->setSamplesPerPixel(kBatchSpp);
+  useSampler(file, sampler, kBatchSpp);
   return file;
 }
 

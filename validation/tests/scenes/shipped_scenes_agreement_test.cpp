@@ -3,7 +3,8 @@
 // and the light tracer against each of them. No integrator is the reference: a bug two of them
 // share (the shadow rays of next-event estimation, say) still shows against the ones that do not
 // share it, path_tracer_mats above all, which traces no shadow ray. Every scene at 32 pixels wide,
-// max_bounces 5.
+// max_bounces 5. Each integrator renders a scene with the sampler that its place takes in turn
+// (suite_samplers.h: independent, halton, sobol along the scenes and the integrators).
 //
 //   - Images. Per 16×16 tile and channel, a Welch t-test of one integrator's mean against the
 //     other's. The light tracer does not see delta surfaces (light_tracer.h), so its
@@ -32,6 +33,7 @@
 #include "validation/batch_regions.h"
 #include "validation/comparison_family.h"
 #include "validation/studies/study_scene.h"
+#include "validation/suite_samplers.h"
 
 namespace verity::validation {
 namespace {
@@ -104,7 +106,7 @@ struct SceneStatistics {
 SceneStatistics renderScene(int sceneIndex, const std::filesystem::path& path, bool pathLengths) {
   SceneStatistics out;
   out.name = studies::shippedSceneName(path);
-  const SceneFile file = loadSceneAtWidth(path, kWidth);
+  SceneFile file = loadSceneAtWidth(path, kWidth);
   const Vector2i res = file.scene->camera().resolution();
   const std::vector<int> tiles = tileRegions(res.x(), res.y(), kTileSize, &out.tiles);
   std::vector<int> masked = tiles;
@@ -117,6 +119,7 @@ SceneStatistics renderScene(int sceneIndex, const std::filesystem::path& path, b
   }
 
   for (int i = 0; i < kCount; ++i) {
+    useSampler(file, suiteSampler(sceneIndex, i), kBatchSpp[i]);
     out.image[i].emplace(tiles, out.tiles, out.name + " " + kIntegrators[i]);
     out.masked[i].emplace(masked, out.tiles, out.name + " " + kIntegrators[i] + ", masked");
     IntegratorSettings settings = studies::studyIntegrator(file, kIntegrators[i], kMaxBounces);
