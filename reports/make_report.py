@@ -326,14 +326,15 @@ def tables(summary):
                 detail.append([g["scene"], g["integrator"], g["threads"], f"{b['budget']:g}{unit}",
                                b["runs"], f"{b['median_spp']:g}",
                                f"{b['median_wall_seconds']:.4g}", f"{b['median_cpu_seconds']:.4g}",
-                               f"{b['median_rel_mse']:.4g}", f"{b['median_rel_variance']:.4g}",
+                               f"{b['median_rel_mse']:.4g}", fmt_number(b["median_rel_variance"]),
                                f"{b['median_efficiency']:.4g}"])
         out.append(("Per budget (medians over runs)",
                     ["scene", "integrator", "threads", "budget", "runs", "spp", "wall s", "CPU s",
                      "relMSE", "rel. variance est.", "efficiency"], detail,
                     "rel. variance est.: the run's own estimate of its relative MSE from its "
                     "per-pixel variance (mean of Var[mean] / (r² + ε)); close to relMSE when "
-                    "the estimator is unbiased and the reference is good."))
+                    "the estimator is unbiased and the reference is good; a dash for a sampler "
+                    "that correlates a pixel's samples, whose spread would overstate it."))
     best = summary.get("best", [])
     if best:
         rows = []
@@ -496,6 +497,27 @@ def html_table(header, rows):
     return f"<table><thead><tr>{h}</tr></thead><tbody>{body}</tbody></table>"
 
 
+def name_samplers(summary, conv):
+    """Names each integrator with its sampler where that is not the independent one
+    ("path_tracer_nee + sobol"): the tables and plots below group by integrator, and so tell
+    the samplers of a `study convergence --samplers` apart."""
+    def label(integrator, sampler):
+        return integrator if sampler in (None, "independent") else f"{integrator} + {sampler}"
+    for r in conv + summary.get("convergence", []):
+        r["integrator"] = label(r["integrator"], r.get("sampler"))
+    for b in summary.get("best", []):
+        b["integrator"] = label(b["integrator"], b.get("sampler"))
+        b["times_better_than"] = {label(k, b.get("sampler")): v
+                                  for k, v in b["times_better_than"].items()}
+    for e in summary.get("equal_time", []):
+        e["integrators"] = {label(k, e.get("sampler")): v for k, v in e["integrators"].items()}
+
+
+def fmt_number(v):
+    """A figure to four digits, or a dash where the summary has none (null)."""
+    return "—" if v is None else f"{v:.4g}"
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--summary", required=True)
@@ -507,6 +529,7 @@ def main():
         summary = json.load(f)
     records = read_records(args.results)
     conv = [r for r in records if r.get("study") == "convergence"]
+    name_samplers(summary, conv)
 
     fits_time = {(g["scene"], g["integrator"], g["threads"], g["budget_type"]): g["fit_time"]
                  for g in summary.get("convergence", [])}
