@@ -1,4 +1,5 @@
-// The image must be bit-identical for any thread count.
+// The image must be bit-identical for any thread count, with every sampler: a sampler's values
+// depend on (seed, pixel, sample index, dimension) alone, not on which thread draws them.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -10,11 +11,14 @@
 namespace verity {
 namespace {
 
-const char* kScene = R"({
+// A lit sphere on a checkered floor, rendered with the scene-format sampler object `sampler`.
+std::string sceneWith(const std::string& sampler) {
+  return R"({
   "camera": {"transform": {"from": [0, 1, 6], "at": [0, 0, 0], "up": [0, 1, 0]}, "vfov": 50,
              "resolution": [40, 36]},
   "integrator": {"type": "path_tracer_mis", "max_bounces": 6},
-  "sampler": {"type": "stratified", "samples": 4},
+  "sampler": )" +
+         sampler + R"(,
   "background": [0.2, 0.3, 0.4],
   "surfaces": [
     {"type": "sphere", "radius": 1, "material": {"type": "lambertian", "albedo": [0.8, 0.5, 0.3]}},
@@ -24,9 +28,11 @@ const char* kScene = R"({
      "material": {"type": "diffuse light", "emit": 10}}
   ]
 })";
+}
 
-std::vector<float> renderWithThreads(int threads) {
-  SceneFile file = loadSceneText(kScene, "/tmp/determinism.json");
+// Every channel of the render, variance channels included, as one array.
+std::vector<float> renderWithThreads(const std::string& sampler, int threads) {
+  SceneFile file = loadSceneText(sceneWith(sampler), "/tmp/determinism.json");
   const auto integrator = makeIntegrator(file.integrator);
   Film film(file.scene->camera().resolution());
   RenderOptions options;
@@ -40,18 +46,31 @@ std::vector<float> renderWithThreads(int threads) {
   return values;
 }
 
-TEST(Determinism, ByteIdenticalForOneTwoAndThreeThreads) {
-  const auto one = renderWithThreads(1);
+// Renders with one thread, then with each of `threads`, and compares the bytes.
+void expectSameForThreads(const std::string& sampler, std::initializer_list<int> threads) {
+  const auto one = renderWithThreads(sampler, 1);
   ASSERT_FALSE(one.empty());
   double total = 0;
   for (float v : one) total += v;
-  EXPECT_GT(total, 0) << "the test scene must not be black";
-  for (int threads : {2, 3}) {
-    const auto other = renderWithThreads(threads);
+  EXPECT_GT(total, 0) << sampler << ": the test scene must not be black";
+  for (int n : threads) {
+    const auto other = renderWithThreads(sampler, n);
     ASSERT_EQ(one.size(), other.size());
     EXPECT_EQ(0, std::memcmp(one.data(), other.data(), one.size() * sizeof(float)))
-        << threads << " threads differ from one";
+        << sampler << ": " << n << " threads differ from one";
   }
+}
+
+TEST(Determinism, ByteIdenticalForOneTwoAndThreeThreads) {
+  expectSameForThreads(R"({"type": "stratified", "samples": 4})", {2, 3});
+}
+
+TEST(SamplerDeterminism, EachSamplerByteIdenticalForOneAndTwoThreads) {
+  for (const char* sampler :
+       {R"({"type": "independent", "samples": 5})", R"({"type": "halton", "samples": 5})",
+        R"({"type": "halton", "randomization": "permute_digits", "samples": 5})",
+        R"({"type": "sobol", "samples": 5})", R"({"type": "stratified", "samples": 7})"})
+    expectSameForThreads(sampler, {2});
 }
 
 }  // namespace
