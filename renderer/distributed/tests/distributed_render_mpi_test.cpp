@@ -106,6 +106,33 @@ TEST_F(DistributedRender, RanksAndThreadsGiveTheSingleProcessImage) {
   }
 }
 
+// The correlated samplers too: each of their values is a function of (seed, pixel, sample
+// index, dimension), so splitting the image over ranks changes no bit.
+TEST_F(DistributedRender, EverySamplerGivesTheSingleProcessImageAcrossRanks) {
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(scene_));
+  for (const std::string sampler : {"stratified", "halton", "sobol"}) {
+    scene["sampler"] = {{"type", sampler}};
+    const fs::path file = dir_ / (sampler + ".json");
+    std::ofstream(file) << scene.dump(2);
+    const auto args = [&](const fs::path& out) {
+      std::vector<std::string> a = renderArgs("path_tracer_nee", 1, out);
+      a[2] = file.string();
+      std::erase(a, "--variance");  // refused: correlated samples give no pixel variance
+      return a;
+    };
+    const fs::path single = dir_ / (sampler + "_single.exr"), split = dir_ / (sampler + "_3.exr");
+    setenv("VERITY_TEST_FILM_DIGEST", "1", 1);
+    const auto alone = run(args(single));
+    unsetenv("VERITY_TEST_FILM_DIGEST");
+    ASSERT_EQ(alone.status, 0) << alone.stderrText;
+    const auto job = run(underMpirun(3, args(split), {"VERITY_TEST_FILM_DIGEST=1"}));
+    ASSERT_EQ(job.status, 0) << job.stderrText;
+    SCOPED_TRACE(sampler);
+    EXPECT_EQ(filmDigest(job.stderrText), filmDigest(alone.stderrText));
+    expectSameImage(single, split);
+  }
+}
+
 TEST_F(DistributedRender, ReferenceAcrossRanksIsTheSingleProcessReference) {
   const auto args = [&](const fs::path& out) {
     return std::vector<std::string>{
