@@ -14,11 +14,10 @@ namespace verity::studies {
 
 namespace {
 
-std::string speedupKey(const FieldReader& record) {
-  const nlohmann::json& r = record.object();
-  return fmt::format("{}|{}x{}|{}|{}|{}|{}|{}", r.value("scene", ""), r.value("width", 0),
-                     r.value("height", 0), r.value("integrator", ""), r.value("max_bounces", 0),
-                     r.value("threads", 0), r.value("spp", 0), r.value("repeat", 0));
+std::string speedupKey(const FieldReader& r) {
+  return fmt::format("{}|{}x{}|{}|{}|{}|{}|{}", r.text("scene"), r.integer("width"),
+                     r.integer("height"), r.text("integrator"), r.integer("max_bounces"),
+                     r.integer("threads"), r.integer("spp"), r.integer("repeat"));
 }
 
 }  // namespace

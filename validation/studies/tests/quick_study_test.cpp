@@ -18,6 +18,7 @@
 #include <fstream>
 
 #include "film/image_io.h"
+#include "testing/error_of.h"
 #include "validation/studies/convergence.h"
 #include "validation/studies/json_lines.h"
 #include "validation/studies/reference.h"
@@ -151,6 +152,33 @@ TEST(QuickStudy, StrategiesSharesAddUpAndResume) {
   const nlohmann::json& g = summary["strategies"][0];
   EXPECT_GE(g["carried_share"].get<double>(), kCarriedShare);
   EXPECT_LT(g["carrying"].size(), g["ranked"].size());
+  fs::remove_all(dir);
+}
+
+// A speedup record read back to resume a study names what it lacks, rather than reading as
+// repeat 0 and hiding a run.
+TEST(QuickStudy, AResumedSpeedupRecordWithoutAKeyIsAnError) {
+  const fs::path dir =
+      fs::path(testing::TempDir()) / ("verity-speedup-resume-" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  SpeedupConfig config;
+  config.scene = fs::path(VERITY_SOURCE_DIR) / "scenes" / "cornell-box.json";
+  config.integrators = {"path_tracer_nee"};
+  config.threads = {1};
+  config.spp = 1;
+  config.repeats = 2;
+  config.resolution = 8;
+  config.output = dir / "speedup.jsonl";
+  EXPECT_EQ(runSpeedupStudy(config, nullptr).done, 2);
+  std::vector<nlohmann::json> records = readJsonLines(config.output);
+  records[1].erase("repeat");
+  {
+    std::ofstream out(config.output, std::ios::trunc);
+    for (const nlohmann::json& r : records) out << r.dump() << "\n";
+  }
+  EXPECT_EQ(errorOf([&] { runSpeedupStudy(config, nullptr); }),
+            config.output.string() + ": record 2, \"repeat\": missing key");
   fs::remove_all(dir);
 }
 
