@@ -6,6 +6,7 @@
 
 #include <limits>
 
+#include "materials/dielectric.h"
 #include "sampling/sampler.h"
 
 namespace verity {
@@ -36,12 +37,12 @@ TEST(RussianRoulette, NoDecisionBeforeItsDepth) {
   FixedSampler sampler(0.999f);
   float survival = 0;
   for (int bounce : {0, 1}) {
-    EXPECT_TRUE(roulette.survives(bounce, Color3::Constant(1e-3f), sampler, &survival));
+    EXPECT_TRUE(roulette.survives(bounce, Color3::Constant(1e-3f), 1, sampler, &survival));
     EXPECT_EQ(survival, 1.0f);
   }
   EXPECT_EQ(sampler.draws, 0);
   // After the third scattering event the roulette decides, with one draw.
-  EXPECT_FALSE(roulette.survives(2, Color3::Constant(1e-3f), sampler, &survival));
+  EXPECT_FALSE(roulette.survives(2, Color3::Constant(1e-3f), 1, sampler, &survival));
   EXPECT_EQ(sampler.draws, 1);
 }
 
@@ -52,7 +53,7 @@ TEST(RussianRoulette, VeryLargeDepthIsNoRoulette) {
   FixedSampler sampler(0.999f);
   float survival = 0;
   for (int bounce = 0; bounce < 100000; ++bounce) {
-    ASSERT_TRUE(roulette.survives(bounce, Color3::Constant(1e-6f), sampler, &survival));
+    ASSERT_TRUE(roulette.survives(bounce, Color3::Constant(1e-6f), 1, sampler, &survival));
     ASSERT_EQ(survival, 1.0f);
   }
   EXPECT_EQ(sampler.draws, 0);
@@ -70,14 +71,47 @@ TEST(RussianRoulette, SurvivalProbability) {
                         Case{Color3(0.01f, 0.02f, 0.0f), 0.05f}}) {
     float survival = 0;
     FixedSampler below(c.survival * 0.99f), above(c.survival);
-    EXPECT_TRUE(roulette.survives(0, c.throughput, below, &survival));
+    EXPECT_TRUE(roulette.survives(0, c.throughput, 1, below, &survival));
     EXPECT_EQ(survival, c.survival);
-    if (c.survival < 1) EXPECT_FALSE(roulette.survives(0, c.throughput, above, &survival));
+    if (c.survival < 1) EXPECT_FALSE(roulette.survives(0, c.throughput, 1, above, &survival));
   }
   FixedSampler sampler(0.0f);
   float survival = 0;
-  EXPECT_FALSE(roulette.survives(0, Color3::Zero(), sampler, &survival));
+  EXPECT_FALSE(roulette.survives(0, Color3::Zero(), 1, sampler, &survival));
   EXPECT_EQ(sampler.draws, 0);
+}
+
+// Roulette reads the throughput with the refractions' η² divided out: a radiance path of
+// scattering weights 0.73 · 0.73 that has entered glass of index 1.5 carries 0.73² / 1.5², yet
+// survives with probability 0.73², not 0.73² / 1.5² (it would then weigh 2.25 times too much
+// on survival: the fireflies of issue 28 on the glass cross-check scene).
+TEST(RussianRoulette, RefractionIsNoLoss) {
+  const RussianRoulette roulette(1);
+  const float eta = 1.5f, albedo2 = 0.73f * 0.73f;
+  const auto entering =
+      sampleSmoothDielectric(Vector3f::UnitZ(), eta, 0.99f, TransportMode::Radiance);
+  ASSERT_TRUE(entering && (entering->lobe & kTransmission));
+  const float etaScale = refractionEtaScale(*entering, TransportMode::Radiance);
+  EXPECT_FLOAT_EQ(etaScale, eta * eta);
+  const Color3 throughput = albedo2 * entering->weight;
+  float survival = 0;
+  FixedSampler sampler(0.0f);
+  EXPECT_TRUE(roulette.survives(0, throughput, etaScale, sampler, &survival));
+  EXPECT_FLOAT_EQ(survival, albedo2);
+  // Leaving the glass scales radiance by η² and etaScale by 1/η²: they cancel again.
+  const auto leaving =
+      sampleSmoothDielectric(-Vector3f::UnitZ(), eta, 0.99f, TransportMode::Radiance);
+  ASSERT_TRUE(leaving && (leaving->lobe & kTransmission));
+  EXPECT_FLOAT_EQ(etaScale * refractionEtaScale(*leaving, TransportMode::Radiance), 1.0f);
+  // Importance is not scaled by refraction, nor is a reflection: nothing to divide out.
+  const auto importance =
+      sampleSmoothDielectric(Vector3f::UnitZ(), eta, 0.99f, TransportMode::Importance);
+  ASSERT_TRUE(importance && (importance->lobe & kTransmission));
+  EXPECT_EQ(refractionEtaScale(*importance, TransportMode::Importance), 1.0f);
+  const auto reflected =
+      sampleSmoothDielectric(Vector3f::UnitZ(), eta, 0.0f, TransportMode::Radiance);
+  ASSERT_TRUE(reflected && (reflected->lobe & kReflection));
+  EXPECT_EQ(refractionEtaScale(*reflected, TransportMode::Radiance), 1.0f);
 }
 
 }  // namespace
