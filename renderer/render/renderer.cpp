@@ -26,6 +26,7 @@ RenderStats render(const Scene& scene, const Integrator& integrator, const Sampl
   Progress progress(uint64_t(spp) * passes.tiles(), options.progress);
   passes.reportTo(&progress);
   Film chunkFilm(film.resolution());
+  if (film.tracksMaxima()) chunkFilm.trackMaxima();
   for (int chunk = 0; chunk < chunkCount(spp); ++chunk) {
     const int done = renderChunk(passes, chunk, spp, chunkFilm, options.cancel, options.components);
     film.add(chunkFilm);
