@@ -57,8 +57,7 @@ void addConvergence(CLI::App& study, const ProcessGroup& group) {
   CLI::App* cmd = addSubcommand(
       study, "convergence",
       "Independent seeded runs per integrator, sampler and budget: relative MSE against a "
-      "reference, "
-      "wall and CPU time; appended to a JSON Lines file and resumable",
+      "reference, wall and CPU time; appended to a JSON Lines file and resumable",
       MpiUse::SplitsWork, group);
   cmd->add_option("scene", config->scene, "Scene file (.json)")->required();
   cmd->add_option("--integrator", config->integrators, "Integrators, comma-separated")
