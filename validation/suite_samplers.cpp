@@ -1,9 +1,6 @@
 #include "validation/suite_samplers.h"
 
-#include <stdexcept>
-
 #include "sampling/sampler.h"
-#include "sampling/sampler_registry.h"
 
 namespace verity::validation {
 
@@ -12,9 +9,7 @@ const char* suiteSampler(int scene, int integrator) {
 }
 
 void useSampler(SceneFile& file, const std::string& type, int spp) {
-  const SamplerType* entry = findSamplerType(type);
-  if (!entry) throw std::invalid_argument("no sampler type \"" + type + "\"");
-  file.sampler = entry->build(nullptr);
+  file.sampler = makeSampler(type, "sampler");
   file.sampler->setSamplesPerPixel(spp);
 }
 

@@ -96,6 +96,32 @@ TEST_F(CommandLine, VarianceChannelsNeedIndependentSamples) {
   }
 }
 
+// --sampler renders with a registry sampler at its defaults in place of the scene's: the
+// scene's own type by name gives the same image, another type another image; an unknown name
+// and variance channels from correlated samples are refused naming the option.
+TEST_F(CommandLine, RenderWithAnotherSampler) {
+  const auto render = [&](const std::vector<std::string>& extra, const std::string& name) {
+    std::vector<std::string> args = {"render", scene_, "--spp", "4",
+                                     "--seed", "7",    "-o",    (dir_ / name).string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return verity(args);
+  };
+  ASSERT_EQ(render({}, "scene.exr").status, 0);
+  ASSERT_EQ(render({"--sampler", "Independent"}, "independent.exr").status, 0);
+  ASSERT_EQ(render({"--sampler", "sobol"}, "sobol.exr").status, 0);
+  EXPECT_EQ(readExr(dir_ / "scene.exr").planes, readExr(dir_ / "independent.exr").planes);
+  EXPECT_NE(readExr(dir_ / "scene.exr").planes, readExr(dir_ / "sobol.exr").planes);
+  const testing::Outcome unknown = render({"--sampler", "sobolev"}, "x.exr");
+  EXPECT_EQ(unknown.status, 1);
+  EXPECT_NE(unknown.stderrText.find("--sampler: unknown sampler \"sobolev\""), std::string::npos)
+      << unknown.stderrText;
+  const testing::Outcome variance = render({"--sampler", "halton", "--variance"}, "y.exr");
+  EXPECT_EQ(variance.status, 1);
+  EXPECT_NE(variance.stderrText.find("--sampler: the variance channels"), std::string::npos)
+      << variance.stderrText;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "y.exr"));
+}
+
 // -o names every command's output: a file (render, compare), a folder (reference), a prefix
 // (chi2); missing folders on the way are created.
 TEST_F(CommandLine, DashOCreatesMissingFolders) {

@@ -18,6 +18,7 @@
 #include "render/interrupt.h"
 #include "render/renderer.h"
 #include "sampling/sampler.h"
+#include "sampling/sampler_registry.h"
 #include "scene/scene_at_width.h"
 
 namespace verity {
@@ -31,6 +32,7 @@ struct RenderArgs {
   int threads = 0;
   uint64_t seed = 0;
   std::string integrator;
+  std::string sampler;  // a registry type with its keys at their defaults; empty: the scene's
   int maxBounces = -1;
   std::string output;
   bool variance = false;
@@ -91,6 +93,17 @@ int run(const RenderArgs& args, const ProcessGroup& group) {
     outputs = {args.output};
   }
 
+  if (!args.sampler.empty()) {
+    std::unique_ptr<Sampler> sampler = makeSampler(args.sampler, "--sampler");
+    sampler->setSamplesPerPixel(file.sampler->samplesPerPixel());
+    if (args.variance && !sampler->samplesAreIndependent())
+      throw VerityError("", "--sampler",
+                        "the variance channels (--variance) estimate a variance from the "
+                        "spread of each pixel's samples, which only independent samples allow; "
+                        "sampler \"" +
+                            args.sampler + "\" correlates them");
+    file.sampler = std::move(sampler);
+  }
   if (args.variance)
     requireIndependentSamples(*file.sampler, args.scene, "the variance channels (--variance)");
   if (group.isRoot())
@@ -196,6 +209,9 @@ void addRenderCommand(CLI::App& app, const ProcessGroup& group) {
   addSeedOption(cmd, args->seed, "Seed of the render's random numbers (0 to 2^64 - 1)")
       ->default_str("0");
   cmd->add_option("--integrator", args->integrator, integratorTypeList())
+      ->default_str("the scene's");
+  cmd->add_option("--sampler", args->sampler,
+                  "Sampler, its keys at their defaults: " + samplerTypeList())
       ->default_str("the scene's");
   cmd->add_option("--max-bounces", args->maxBounces,
                   "Maximum scattering events per path (0: emitters seen directly)")

@@ -45,4 +45,9 @@ void requireIndependentSamples(const Sampler& sampler, const std::string& file,
 // (sampler_registry.h), "independent" when absent; null `node` (no object) gives the default.
 std::unique_ptr<Sampler> makeSampler(const JsonNode* node);
 
+// A sampler of the registry type `name` (any case, or an alias) with its keys at their
+// defaults, as a command-line option or a test names one; an unknown name is a VerityError
+// naming `option` and the types there are.
+std::unique_ptr<Sampler> makeSampler(const std::string& name, const std::string& option);
+
 }  // namespace verity

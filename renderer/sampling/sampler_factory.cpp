@@ -1,3 +1,6 @@
+#include <algorithm>
+#include <cctype>
+
 #include "core/error.h"
 #include "sampling/sampler.h"
 #include "sampling/sampler_registry.h"
@@ -24,6 +27,17 @@ std::unique_ptr<Sampler> makeSampler(const JsonNode* node) {
     (*node)[{"type"}].fail("unsupported sampler type \"" + type + "\" (expected one of " +
                            samplerTypeList() + ")");
   return entry->build(node);
+}
+
+std::unique_ptr<Sampler> makeSampler(const std::string& name, const std::string& option) {
+  std::string spelling = name;
+  std::transform(spelling.begin(), spelling.end(), spelling.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  const SamplerType* entry = findSamplerType(spelling);
+  if (!entry)
+    throw VerityError(
+        "", option, "unknown sampler \"" + name + "\" (expected one of " + samplerTypeList() + ")");
+  return entry->build(nullptr);
 }
 
 }  // namespace verity

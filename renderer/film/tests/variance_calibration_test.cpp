@@ -31,7 +31,6 @@
 #include "film/image_io.h"
 #include "render/renderer.h"
 #include "sampling/sampler.h"
-#include "sampling/sampler_registry.h"
 #include "scene/scene_at_width.h"
 
 namespace verity {
@@ -121,7 +120,7 @@ double normalQuantile(double p) {
 }
 
 std::unique_ptr<Sampler> makeSamplerNamed(const std::string& name) {
-  auto sampler = findSamplerType(name)->build(nullptr);
+  auto sampler = makeSampler(name, "sampler");
   sampler->setSamplesPerPixel(kSpp);
   return sampler;
 }

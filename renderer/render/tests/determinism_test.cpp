@@ -7,7 +7,7 @@
 
 #include "film/image_io.h"
 #include "render/renderer.h"
-#include "sampling/sampler_registry.h"
+#include "sampling/sampler.h"
 #include "scene/scene_at_width.h"
 #include "scene/scene_loader.h"
 
@@ -97,7 +97,7 @@ TEST(SamplerDeterminism, EveryShippedSceneWithEachSamplerForOneAndTwoThreads) {
     for (const char* type : {"stratified", "halton", "sobol"}) {
       SCOPED_TRACE(entry.path().filename().string() + ", " + type);
       SceneFile file = loadSceneAtWidth(entry.path(), kSceneWidth);
-      file.sampler = findSamplerType(type)->build(nullptr);
+      file.sampler = makeSampler(type, "sampler");
       file.sampler->setSamplesPerPixel(kSceneSpp);
       const auto one = renderWithThreads(file, 1), two = renderWithThreads(file, 2);
       ASSERT_EQ(one.size(), two.size());

@@ -33,7 +33,6 @@
 
 #include "core/hash.h"
 #include "sampling/sampler.h"
-#include "sampling/sampler_registry.h"
 
 namespace verity {
 namespace {
@@ -186,7 +185,7 @@ TEST(SamplerRates, EachSamplerConvergesAtItsTheoreticalRate) {
   const double zOneSided =
       boost::math::quantile(boost::math::normal(), 1 - kFamilyLevel / kCheckCount);
   for (const RateCheck& check : kChecks) {
-    auto sampler = findSamplerType(check.sampler)->build(nullptr);
+    auto sampler = makeSampler(check.sampler, "sampler");
     std::vector<LogVariance> points;
     for (int k = check.kFirst; k <= check.kLast; k += check.kStep) {
       std::optional<LogVariance> p = measure(*sampler, *check.integrand, k);
