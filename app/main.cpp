@@ -10,6 +10,7 @@
 #include "distributed/process_group.h"
 #include "validation/compare_command.h"
 #include "validation/studies/bench_command.h"
+#include "validation/studies/error_command.h"
 #include "validation/studies/reference_command.h"
 #include "validation/studies/report_command.h"
 #include "validation/studies/study_command.h"
@@ -47,6 +48,7 @@ int main(int argc, char** argv) {
   verity::addRenderCommand(app, group);
   verity::addBenchCommand(app, group);
   verity::addCompareCommand(app, group);
+  verity::addErrorCommand(app, group);
   verity::addReferenceCommand(app, group);
   verity::addStudyCommand(app, group);
   verity::addReportCommand(app, group);

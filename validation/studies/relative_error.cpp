@@ -54,12 +54,10 @@ ErrorStats compareToReference(const Film& film, const ImageChannels& reference) 
       if (!finite) continue;
       for (int c = 0; c < 3; ++c) {
         const double r = (*ref[c])[i];
-        const double denominator = r * r + kRelEpsilon;
-        const double d = double(mean[c]) - r;
         const double varOfMean = double(var[c]) / n;
-        sumRel += d * d / denominator;
+        sumRel += relativeSquaredError(mean[c], r);
         sumVar += varOfMean;
-        sumRelVar += varOfMean / denominator;
+        sumRelVar += varOfMean / (r * r + kRelEpsilon);
       }
       ++s.pixelsUsed;
     }
@@ -69,6 +67,35 @@ ErrorStats compareToReference(const Film& film, const ImageChannels& reference) 
   s.meanVariance = sumVar / terms;
   s.relVariance = sumRelVar / terms;
   return s;
+}
+
+double imageRelMse(const ImageChannels& image, const std::array<std::string, 3>& rgb,
+                   const ImageChannels& reference, const std::string& file) {
+  if (image.width != reference.width || image.height != reference.height)
+    throw VerityError(file, "",
+                      fmt::format("an image of {}×{} against a reference of {}×{}", image.width,
+                                  image.height, reference.width, reference.height));
+  const std::vector<float>* ref[3] = {&plane(reference, "R"), &plane(reference, "G"),
+                                      &plane(reference, "B")};
+  const std::vector<float>* x[3] = {&plane(image, rgb[0]), &plane(image, rgb[1]),
+                                    &plane(image, rgb[2])};
+  double sum = 0;
+  size_t terms = 0;
+  for (size_t i = 0; i < ref[0]->size(); ++i) {
+    bool finite = true;
+    for (int c = 0; c < 3; ++c) finite = finite && std::isfinite((*ref[c])[i]);
+    if (!finite) continue;
+    for (int c = 0; c < 3; ++c) {
+      if (!std::isfinite((*x[c])[i]))
+        throw VerityError(file, "",
+                          fmt::format("pixel ({}, {}) of channel {} is {}", i % image.width,
+                                      i / image.width, rgb[c], (*x[c])[i]));
+      sum += relativeSquaredError((*x[c])[i], (*ref[c])[i]);
+      ++terms;
+    }
+  }
+  if (terms == 0) throw VerityError(file, "", "the reference has no finite pixel");
+  return sum / double(terms);
 }
 
 FireflyShare fireflyShare(const Film& film, const ImageChannels& reference, double k) {
@@ -91,8 +118,7 @@ FireflyShare fireflyShare(const Film& film, const ImageChannels& reference, doub
       for (int c = 0; c < 3; ++c) {
         const double r = (*ref[c])[i];
         const double scale = std::sqrt(r * r + kRelEpsilon);
-        const double d = double(mean[c]) - r;
-        error += d * d / (scale * scale);
+        error += relativeSquaredError(mean[c], r);
         far = far || (double(largest[c]) - r) / n > k * scale;
       }
       s.allRelMseSum += error;
@@ -114,11 +140,7 @@ std::vector<float> relativeErrorImage(const Film& film, const ImageChannels& ref
       const size_t i = size_t(y) * film.width() + x;
       const Color3 mean = film.mean(x, y);
       double sum = 0;
-      for (int c = 0; c < 3; ++c) {
-        const double r = (*ref[c])[i];
-        const double d = double(mean[c]) - r;
-        sum += d * d / (r * r + kRelEpsilon);
-      }
+      for (int c = 0; c < 3; ++c) sum += relativeSquaredError(mean[c], (*ref[c])[i]);
       out[i] = float(std::sqrt(sum / 3));
     }
   return out;

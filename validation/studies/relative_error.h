@@ -1,6 +1,7 @@
 // Errors of a render against a reference image: the relative MSE of the studies.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -18,6 +19,11 @@ namespace verity::studies {
 // MSEs compare.
 inline constexpr double kRelEpsilon = 1e-2;
 
+// One channel's relative squared error (x − r)² / (r² + ε).
+inline double relativeSquaredError(double x, double r) {
+  return (x - r) * (x - r) / (r * r + kRelEpsilon);
+}
+
 // Errors of an image against a reference of the same size (means in planes R, G, B).
 struct ErrorStats {
   double relMse = 0;        // mean over pixels and channels of (x − r)² / (r² + ε)
@@ -29,6 +35,11 @@ struct ErrorStats {
 ImageChannels readReference(const std::filesystem::path& file);
 // `reference` holds planes R, G and B (readReference) and is as large as `film`.
 ErrorStats compareToReference(const Film& film, const ImageChannels& reference);
+// The relative MSE of an image from any renderer, its planes `rgb` (R, G, B), against
+// `reference`: pixels with a non-finite reference are left out, as compareToReference does.
+// Throws VerityError naming `file` when the sizes differ or a used pixel is not finite.
+double imageRelMse(const ImageChannels& image, const std::array<std::string, 3>& rgb,
+                   const ImageChannels& reference, const std::string& file);
 // Fireflies: pixels whose error comes from one sample far above the reference. A pixel of n
 // samples holds a far sample when, in some channel, its largest sample m exceeds the reference
 // r by so much that this sample alone moves the pixel mean by more than `k` units of the
