@@ -122,6 +122,28 @@ TEST_F(CommandLine, RenderWithAnotherSampler) {
   EXPECT_FALSE(std::filesystem::exists(dir_ / "y.exr"));
 }
 
+// --rr-depth overrides the integrator's "rr_depth": its default value gives the same image,
+// roulette from the first bounce another; an integrator without roulette refuses it.
+TEST_F(CommandLine, RouletteDepthOverride) {
+  const auto render = [&](const std::vector<std::string>& extra, const std::string& name) {
+    std::vector<std::string> args = {"render", scene_, "--spp", "4",
+                                     "--seed", "7",    "-o",    (dir_ / name).string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return verity(args);
+  };
+  ASSERT_EQ(render({}, "scene.exr").status, 0);
+  ASSERT_EQ(render({"--rr-depth", "3"}, "three.exr").status, 0);
+  ASSERT_EQ(render({"--rr-depth", "1"}, "one.exr").status, 0);
+  EXPECT_EQ(readExr(dir_ / "scene.exr").planes, readExr(dir_ / "three.exr").planes);
+  EXPECT_NE(readExr(dir_ / "scene.exr").planes, readExr(dir_ / "one.exr").planes);
+  const testing::Outcome refused = render({"--integrator", "normals", "--rr-depth", "2"}, "n.exr");
+  EXPECT_EQ(refused.status, 1);
+  EXPECT_NE(refused.stderrText.find("--rr-depth: the integrator \"normals\" has no Russian "
+                                    "roulette"),
+            std::string::npos)
+      << refused.stderrText;
+}
+
 // -o names every command's output: a file (render, compare), a folder (reference), a prefix
 // (chi2); missing folders on the way are created.
 TEST_F(CommandLine, DashOCreatesMissingFolders) {

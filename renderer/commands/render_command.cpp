@@ -34,6 +34,7 @@ struct RenderArgs {
   std::string integrator;
   std::string sampler;  // a registry type with its keys at their defaults; empty: the scene's
   int maxBounces = -1;
+  int rrDepth = 0;  // 0: the scene's
   std::string output;
   bool variance = false;
   bool explain = false;
@@ -70,6 +71,12 @@ int run(const RenderArgs& args, const ProcessGroup& group) {
         fmt::format("{} warning(s), and --strict makes them errors", file.warnings.size()));
   IntegratorSettings settings =
       overrideIntegrator(file.integrator, args.integrator, args.maxBounces, "--integrator");
+  if (args.rrDepth > 0) {
+    if (!declaresKey(*findIntegratorType(settings.type), "rr_depth"))
+      throw VerityError("", "--rr-depth",
+                        "the integrator \"" + settings.type + "\" has no Russian roulette");
+    settings.rrDepth = args.rrDepth;
+  }
   if (args.explain) {
     if (!group.isRoot()) return 0;
     fmt::print("{}", file.scene->summary().explain());
@@ -217,6 +224,11 @@ void addRenderCommand(CLI::App& app, const ProcessGroup& group) {
                   "Maximum scattering events per path (0: emitters seen directly)")
       ->default_str("the scene's")
       ->check(wholeNumber(0, kMaxBouncesLimit));
+  cmd->add_option("--rr-depth", args->rrDepth,
+                  "Scattering event after which Russian roulette first decides whether a path "
+                  "goes on (the integrator's \"rr_depth\")")
+      ->default_str("the scene's")
+      ->check(wholeNumber(1));
   CLI::Option* output =
       cmd->add_option("-o,--output", args->output,
                       "Output image file, .exr or .png; missing folders are created")
