@@ -16,10 +16,15 @@ inline uint64_t mix64(uint64_t x) {
   return x;
 }
 
+// One more value folded into a hash: hashValues(a, b, c) == hashCombine(hashValues(a, b), c).
+inline uint64_t hashCombine(uint64_t h, uint64_t value) {
+  return mix64(h ^ (value + 0x9e3779b97f4a7c15ull));
+}
+
 template <typename... Rest>
 uint64_t hashValues(uint64_t first, Rest... rest) {
   uint64_t h = mix64(first + 0x9e3779b97f4a7c15ull);
-  ((h = mix64(h ^ (static_cast<uint64_t>(rest) + 0x9e3779b97f4a7c15ull))), ...);
+  ((h = hashCombine(h, static_cast<uint64_t>(rest))), ...);
   return h;
 }
 

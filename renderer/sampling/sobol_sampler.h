@@ -28,7 +28,11 @@ class SobolSampler : public Sampler {
   std::unique_ptr<Sampler> clone() const override { return std::make_unique<SobolSampler>(*this); }
 
  private:
-  uint64_t pixelKey_ = 0;
+  // hashValues(seed, pixel, k) of the k-th call, folded one value at a time, so the pixel's
+  // part is hashed once per pixel sample.
+  uint64_t callHash();
+
+  uint64_t pixelHash_ = 0;
   uint32_t index_ = 0;
   int call_ = 0;  // the padded dimension of the next request
 };

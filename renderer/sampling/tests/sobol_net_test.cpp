@@ -7,6 +7,7 @@
 #include <set>
 #include <vector>
 
+#include "core/hash.h"
 #include "sampling/sobol_points.h"
 #include "sampling/sobol_sampler.h"
 
@@ -38,6 +39,26 @@ uint32_t fraction32(float u) {
   EXPECT_GE(u, 0.0f);
   EXPECT_LT(u, 1.0f);
   return static_cast<uint32_t>(std::ldexp(double(u), 32));  // exact: u is a multiple of 2^-24
+}
+
+// Dimension 1 over the whole 32-bit index range, which a scrambled index reaches: its
+// generator matrix is Pascal's triangle mod 2 (Sobol 1967), so index 2^k maps to the fraction
+// whose bit i (i = 0 the 1/2 bit) is C(k, i) mod 2, which by Lucas' theorem is 1 exactly
+// when the bits of i are a subset of those of k; and the map is linear over GF(2).
+TEST(SobolPoints, DimensionOneIsPascalsTriangleForEveryIndexBit) {
+  for (uint32_t k = 0; k < 32; ++k) {
+    uint32_t expected = 0;
+    for (uint32_t i = 0; i <= k; ++i)
+      if ((i & k) == i) expected |= 0x80000000u >> i;
+    EXPECT_EQ(sobolSample(1u << k, 1), expected) << "index 2^" << k;
+  }
+  uint64_t state = 12345;
+  const auto next = [&] { return static_cast<uint32_t>((state = mix64(state + 1)) >> 16); };
+  for (int n = 0; n < 10000; ++n) {
+    const uint32_t a = next(), b = next();
+    ASSERT_EQ(sobolSample(a ^ b, 1), sobolSample(a, 1) ^ sobolSample(b, 1)) << a << " " << b;
+  }
+  EXPECT_EQ(sobolSample(0, 1), 0u);
 }
 
 TEST(SobolPoints, FirstPointsFormNets) {
