@@ -500,7 +500,7 @@ def html_table(header, rows):
 def name_samplers(summary, conv):
     """Names each integrator with its sampler where that is not the independent one
     ("path_tracer_nee + sobol"): the tables and plots below group by integrator, and so tell
-    the samplers of a `study convergence --samplers` apart."""
+    the samplers of a `study convergence --sampler` apart."""
     def label(integrator, sampler):
         return integrator if sampler in (None, "independent") else f"{integrator} + {sampler}"
     for r in conv + summary.get("convergence", []):

@@ -51,7 +51,7 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
   // comparison reports the mismatch).
   const SceneFile file =
       loadSceneAtWidth(config.scene, config.resolution > 0 ? config.resolution : reference.width);
-  const std::vector<StudySampler> samplers = prepareSamplers(file, config.samplers, "--samplers");
+  const std::vector<StudySampler> samplers = prepareSamplers(file, config.samplers, "--sampler");
   std::vector<PreparedIntegrator> integrators =
       prepareIntegrators(file, config.integrators, config.maxBounces);
   const Vector2i resolution = file.scene->camera().resolution();

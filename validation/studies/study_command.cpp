@@ -63,7 +63,7 @@ void addConvergence(CLI::App& study, const ProcessGroup& group) {
   cmd->add_option("--integrator", config->integrators, "Integrators, comma-separated")
       ->required()
       ->delimiter(',');
-  cmd->add_option("--samplers", config->samplers,
+  cmd->add_option("--sampler", config->samplers,
                   "Samplers, comma-separated, each run with every integrator and seeds of its "
                   "own (a sampler other than the scene's takes its keys' defaults); one of " +
                       samplerTypeList() +

@@ -1,6 +1,6 @@
 // Samplers compared by the convergence study: every record says which sampler made it, each
 // sampler's runs have seeds of their own, only independent samples give a rel_variance, an
-// unknown sampler is an error naming --samplers, and the summary fits each (integrator,
+// unknown sampler is an error naming --sampler, and the summary fits each (integrator,
 // sampler) group from its own records: checked against slopes, intervals and times to
 // accuracy computed by hand from synthetic records.
 #include <fmt/format.h>
@@ -93,7 +93,7 @@ TEST_F(SamplerStudy, RecordsCarryTheSamplerAndEachSamplerIsASummaryRow) {
 TEST_F(SamplerStudy, AnUnknownSamplerIsAnErrorNamingTheOption) {
   study_.samplers = {"independent", "sobl"};
   EXPECT_EQ(errorOf([&] { runConvergenceStudy(study_, nullptr); }),
-            "--samplers: unknown sampler \"sobl\" (expected one of independent, stratified, "
+            "--sampler: unknown sampler \"sobl\" (expected one of independent, stratified, "
             "halton, sobol)");
   EXPECT_FALSE(fs::exists(study_.output));
 }
