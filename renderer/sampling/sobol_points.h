@@ -12,12 +12,12 @@
 
 namespace verity {
 
-inline uint32_t reverseBits(uint32_t x) {
-  x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+// The bits of x in reverse order: the bytes swapped, then the bits within each byte.
+constexpr uint32_t reverseBits(uint32_t x) {
+  x = __builtin_bswap32(x);
   x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
-  x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
-  return (x >> 16) | (x << 16);
+  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+  return ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
 }
 
 namespace detail {
@@ -34,23 +34,37 @@ constexpr uint32_t sobolDimension1Bitwise(uint32_t index) {
 // The generator matrix is linear over GF(2), so a point is the xor of the images of its
 // index's four bytes: tables of those images, built at compile time, replace the loop over
 // 32 bits that a scrambled (full 32-bit) index would otherwise take.
+// `mirrored` holds the same images with their bits reversed (reversal is linear too).
 struct SobolDimension1Tables {
-  uint32_t byte[4][256] = {};
+  uint32_t byte[4][256] = {}, mirrored[4][256] = {};
   constexpr SobolDimension1Tables() {
     for (int b = 0; b < 4; ++b)
-      for (uint32_t v = 0; v < 256; ++v) byte[b][v] = sobolDimension1Bitwise(v << (8 * b));
+      for (uint32_t v = 0; v < 256; ++v) {
+        byte[b][v] = sobolDimension1Bitwise(v << (8 * b));
+        mirrored[b][v] = reverseBits(byte[b][v]);
+      }
   }
 };
 inline constexpr SobolDimension1Tables kSobolDimension1;
 
 }  // namespace detail
 
+namespace detail {
+inline uint32_t sobolDimension1(uint32_t index, const uint32_t (&t)[4][256]) {
+  return t[0][index & 0xff] ^ t[1][(index >> 8) & 0xff] ^ t[2][(index >> 16) & 0xff] ^
+         t[3][index >> 24];
+}
+}  // namespace detail
+
 // Dimension `dimension` (0 or 1) of Sobol point `index`.
 inline uint32_t sobolSample(uint32_t index, int dimension) {
   if (dimension == 0) return reverseBits(index);
-  const auto& t = detail::kSobolDimension1.byte;
-  return t[0][index & 0xff] ^ t[1][(index >> 8) & 0xff] ^ t[2][(index >> 16) & 0xff] ^
-         t[3][index >> 24];
+  return detail::sobolDimension1(index, detail::kSobolDimension1.byte);
+}
+
+// reverseBits(sobolSample(index, 1)), without the reversal.
+inline uint32_t sobolDimension1Mirrored(uint32_t index) {
+  return detail::sobolDimension1(index, detail::kSobolDimension1.mirrored);
 }
 
 // An Owen scramble of the bits of x (a random permutation of each bit keyed by the bits above
@@ -58,14 +72,16 @@ inline uint32_t sobolSample(uint32_t index, int dimension) {
 // mirrored, the Laine-Karras style hash below changes each bit by a function of the bits
 // below it alone (adding the seed carries upward; multiplying by an even constant reads only
 // lower bits), so mirrored back it is a nested scramble, which keeps every (0, m, 2)-net a net.
-inline uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
-  x = reverseBits(x);
+inline uint32_t laineKarrasPermutation(uint32_t x, uint32_t seed) {
   x += seed;
   x ^= x * 0x6c50b47cu;
   x ^= x * 0xb82f1e52u;
   x ^= x * 0xc7afe638u;
   x ^= x * 0x8d22f6e6u;
-  return reverseBits(x);
+  return x;
+}
+inline uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
+  return reverseBits(laineKarrasPermutation(reverseBits(x), seed));
 }
 
 }  // namespace verity

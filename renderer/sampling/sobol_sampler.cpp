@@ -9,7 +9,7 @@ namespace verity {
 void SobolSampler::startPixelSample(const Point2i& pixel, int index) {
   const uint64_t pixelKey = (uint64_t(uint32_t(pixel.y())) << 32) | uint32_t(pixel.x());
   pixelHash_ = hashValues(seed_, pixelKey);
-  index_ = static_cast<uint32_t>(index);
+  mirroredIndex_ = reverseBits(static_cast<uint32_t>(index));
   call_ = 0;
 }
 
@@ -17,20 +17,30 @@ uint64_t SobolSampler::callHash() {
   return hashCombine(pixelHash_, static_cast<uint64_t>(call_++));
 }
 
+// Each request is, with scramble = nestedUniformScramble = R ∘ LK ∘ R (R: reverseBits, LK:
+// laineKarrasPermutation) and seeds a, b, c from the call's hash,
+//   j = scramble(index, a),  x = scramble(sobolSample(j, 0), b),  y = scramble(sobolSample(j, 1),
+//   c).
+// Since sobolSample(j, 0) = R(j) and R ∘ R is the identity, x = R(LK(j, b)) and
+// j = R(LK(R(index), a)), and y = R(LK(R(sobolSample(j, 1)), c)) reads the mirrored table:
+// the same bits with three reversals instead of seven.
 float SobolSampler::next1D() {
   const uint64_t h = callHash();
-  // Shuffling by a nested scramble keeps the first 2^m indices an aligned block of 2^m.
-  const uint32_t index = nestedUniformScramble(index_, static_cast<uint32_t>(h));
-  return uniformFloat(nestedUniformScramble(sobolSample(index, 0), static_cast<uint32_t>(h >> 32)));
+  const uint32_t shuffled =
+      reverseBits(laineKarrasPermutation(mirroredIndex_, static_cast<uint32_t>(h)));
+  return uniformFloat(
+      reverseBits(laineKarrasPermutation(shuffled, static_cast<uint32_t>(h >> 32))));
 }
 
 Point2f SobolSampler::next2D() {
   const uint64_t h = callHash();
   const uint32_t yScramble = static_cast<uint32_t>(mix64(h));
-  const uint32_t index = nestedUniformScramble(index_, static_cast<uint32_t>(h));
+  const uint32_t shuffled =
+      reverseBits(laineKarrasPermutation(mirroredIndex_, static_cast<uint32_t>(h)));
   return {
-      uniformFloat(nestedUniformScramble(sobolSample(index, 0), static_cast<uint32_t>(h >> 32))),
-      uniformFloat(nestedUniformScramble(sobolSample(index, 1), yScramble))};
+      uniformFloat(reverseBits(laineKarrasPermutation(shuffled, static_cast<uint32_t>(h >> 32)))),
+      uniformFloat(
+          reverseBits(laineKarrasPermutation(sobolDimension1Mirrored(shuffled), yScramble)))};
 }
 
 SamplerType sobolSamplerType() {

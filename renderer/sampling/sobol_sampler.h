@@ -33,8 +33,8 @@ class SobolSampler : public Sampler {
   uint64_t callHash();
 
   uint64_t pixelHash_ = 0;
-  uint32_t index_ = 0;
-  int call_ = 0;  // the padded dimension of the next request
+  uint32_t mirroredIndex_ = 0;  // the sample index with its bits reversed
+  int call_ = 0;                // the padded dimension of the next request
 };
 
 // "sobol" in the scene format (sampler_registry.h).

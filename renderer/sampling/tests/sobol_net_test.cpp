@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/hash.h"
+#include "sampling/independent_sampler.h"
 #include "sampling/sobol_points.h"
 #include "sampling/sobol_sampler.h"
 
@@ -88,6 +89,44 @@ TEST(SobolPoints, ScramblingChangesThePoints) {
   for (uint32_t i = 0; i < 256; ++i)
     moved += nestedUniformScramble(sobolSample(i, 0), 7) != sobolSample(i, 0);
   EXPECT_GT(moved, 200);
+}
+
+TEST(SobolPoints, ReverseBitsMirrorsEachBit) {
+  for (int i = 0; i < 32; ++i) EXPECT_EQ(reverseBits(1u << i), 0x80000000u >> i) << "bit " << i;
+  uint64_t state = 7;
+  for (int n = 0; n < 1000; ++n) {
+    const uint32_t x = static_cast<uint32_t>(state = mix64(state + 1));
+    ASSERT_EQ(reverseBits(reverseBits(x)), x);
+    ASSERT_EQ(sobolDimension1Mirrored(x), reverseBits(sobolSample(x, 1))) << x;
+  }
+}
+
+// The sampler computes its requests with fewer bit reversals than the plain composition of
+// the scrambles (sobol_sampler.cpp); both must give the same bits.
+TEST(SobolSampler, RequestsAreTheScrambledPointsOfTheirHashes) {
+  constexpr uint64_t kSeed = 99;
+  SobolSampler sampler;
+  sampler.setSeed(kSeed);
+  sampler.setSamplesPerPixel(1 << 20);
+  for (const Point2i& pixel : {Point2i(0, 0), Point2i(5, 1234), Point2i(70000, 3)})
+    for (uint32_t index : {0u, 1u, 6u, 255u, 65537u, 1000003u}) {
+      sampler.startPixelSample(pixel, static_cast<int>(index));
+      const uint64_t pixelKey = (uint64_t(uint32_t(pixel.y())) << 32) | uint32_t(pixel.x());
+      for (int call = 0; call < 8; ++call) {
+        const uint64_t h = hashValues(kSeed, pixelKey, call);
+        const uint32_t j = nestedUniformScramble(index, static_cast<uint32_t>(h));
+        const uint32_t x = nestedUniformScramble(sobolSample(j, 0), static_cast<uint32_t>(h >> 32));
+        if (call % 3 == 1) {
+          ASSERT_EQ(sampler.next1D(), uniformFloat(x)) << "call " << call;
+        } else {
+          const uint32_t y =
+              nestedUniformScramble(sobolSample(j, 1), static_cast<uint32_t>(mix64(h)));
+          const Point2f u = sampler.next2D();
+          ASSERT_EQ(u.x(), uniformFloat(x)) << "call " << call;
+          ASSERT_EQ(u.y(), uniformFloat(y)) << "call " << call;
+        }
+      }
+    }
 }
 
 // Every request of the sampler, in the order a path makes them (2D, 2D, 1D, 2D, 1D, 2D).
