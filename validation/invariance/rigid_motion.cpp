@@ -65,7 +65,10 @@ std::vector<RigidMotion> standardMotions(const Scene& scene) {
   // Coordinates up to `reach` round by 2^-23·reach at most: keep that below 1e-3 of the
   // smallest surface.
   const double reach = 1e-3 * smallest * 0x1p23;
-  std::vector<RigidMotion> motions = {{"planes", translation(-lo)}};
+  // "planes" brings every coordinate within the scene's extent of the origin, "turn" keeps them
+  // within it: neither fits a scene wider than floats can place its smallest surface across.
+  std::vector<RigidMotion> motions;
+  if (extent <= reach) motions.push_back({"planes", translation(-lo)});
   const double far = std::min(100 * extent, reach - extent);
   if (far >= extent)
     motions.push_back({"far", translation(far * Eigen::Vector3d(0.48, -0.6, 0.64))});

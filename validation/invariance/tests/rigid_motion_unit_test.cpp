@@ -35,6 +35,19 @@ TEST(RigidMotion, PlanesPutTheLowerBoundsAtTheOrigin) {
   EXPECT_NEAR((moved.scene->bounds().hi - original.scene->bounds().hi - shift).norm(), 0, 1e-5);
 }
 
+// Small objects on a floor two million units wide: moved onto the planes or turned, they would
+// sit where floats are 1/16 apart, so only the exact motions (turn90, mirror) remain.
+TEST(RigidMotion, NoRoundingMotionForAScenesTooWideForItsSmallestSurface) {
+  nlohmann::json scene = nlohmann::json::parse(kScene);
+  scene["surfaces"].push_back({{"type", "quad"},
+                               {"size", 2e6},
+                               {"transform", {{"axis", {1, 0, 0}}, {"angle", -90}}},
+                               {"material", scene["surfaces"][0]["material"]}});
+  std::vector<std::string> names;
+  for (const RigidMotion& m : standardMotions(*load(scene).scene)) names.push_back(m.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"turn90", "mirror"}));
+}
+
 TEST(RigidMotion, CameraRaysAndTexturesFollowEveryMotion) {
   const nlohmann::json scene = nlohmann::json::parse(kScene);
   const SceneFile original = load(scene);
