@@ -21,8 +21,8 @@ void randomWalk(const Scene& scene, Sampler& sampler, Ray ray, Color3 beta, floa
   // Throughput of the scattering events alone, for roulette (light subpaths start with the
   // emitted power, which says nothing about how much a path has lost).
   Color3 scattering = Color3::Ones();
-  float etaScale = 1;  // the refractions' η², divided out of `scattering` for roulette
-  for (int bounce = 0; static_cast<int>(path.size()) < maxVertices; ++bounce) {
+  RouletteHistory history;
+  while (static_cast<int>(path.size()) < maxVertices) {
     SurfaceInteraction si;
     ++stats.rays;
     if (!scene.intersect(ray, si)) {
@@ -75,12 +75,12 @@ void randomWalk(const Scene& scene, Sampler& sampler, Ray ray, Color3 beta, floa
     before.pdfRev = toAreaDensity(pdfRev, current, before);
     beta *= weight;
     scattering *= weight;
-    etaScale *= refractionEtaScale(*bs, mode);
+    history.record(*bs, mode);
     if (isBlack(beta) || !beta.allFinite()) return;
     ray = si.spawnRay(wo);
     pdfDir = pdfFwd;
     float survival;
-    if (!roulette.survives(bounce, scattering, etaScale, sampler, &survival)) return;
+    if (!roulette.survives(history, scattering, sampler, &survival)) return;
     beta /= survival;
     scattering /= survival;
   }

@@ -39,8 +39,9 @@ KeyDeclaration rrDepthKey() {
           ValueType::Integer,
           ">= 1",
           std::to_string(IntegratorSettings().rrDepth),
-          "the scattering event after which Russian roulette first decides whether a path "
-          "goes on (1: after the first); one more than max_bounces turns the roulette off"};
+          "the non-specular scattering event after which Russian roulette first decides "
+          "whether a path goes on (1: after the first; specular events, at mirrors and "
+          "smooth glass, are not counted); one more than max_bounces turns the roulette off"};
 }
 
 KeyDeclaration misPowerKey(const std::string& what) {

@@ -44,7 +44,7 @@ Color3 PathTracer::sampleLight(const Scene& scene, Sampler& sampler, const Surfa
 Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay,
                       SampleContext& context) const {
   Color3 L = Color3::Zero(), beta = Color3::Ones();
-  float etaScale = 1;  // the refractions' η², divided out of beta for roulette
+  RouletteHistory history;
   Ray ray = cameraRay;
   // Whether emission reached by the current ray could also have been found by sampling a
   // light at the previous vertex (false for camera rays and after delta bounces).
@@ -89,14 +89,14 @@ Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay
                                         TransportMode::Radiance);
     if (!bs) break;
     beta *= bs->weight;
-    etaScale *= refractionEtaScale(*bs, TransportMode::Radiance);
+    history.record(*bs, TransportMode::Radiance);
     lightSampledBefore = canSampleLights && !bs->isDelta();
     bsdfPdf = bs->pdf;
     previous = si.p;
     ray = si.spawnRay(si.toWorld(bs->wo));
 
     float survival;
-    if (!roulette_.survives(bounce, beta, etaScale, sampler, &survival)) break;
+    if (!roulette_.survives(history, beta, sampler, &survival)) break;
     beta /= survival;
   }
   return L;

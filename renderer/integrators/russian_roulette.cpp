@@ -6,11 +6,11 @@
 
 namespace verity {
 
-bool RussianRoulette::survives(int bounce, const Color3& throughput, float etaScale,
+bool RussianRoulette::survives(const RouletteHistory& history, const Color3& throughput,
                                Sampler& sampler, float* survival) const {
   *survival = 1;
-  if (bounce + 1 < depth_) return true;
-  const float q = std::min(1.0f, maxComponent(throughput) * etaScale);
+  if (history.nonDeltaEvents < depth_) return true;
+  const float q = std::min(1.0f, maxComponent(throughput) * history.etaScale);
   // A path that carries nothing ends without drawing a sample. The path tracer relies on
   // this (it does not stop at a zero throughput before); the subpath walk of BDPT and the
   // light tracer already ends at one, so for it this test never fires.

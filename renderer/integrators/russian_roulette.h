@@ -11,29 +11,48 @@ namespace verity {
 
 class Sampler;
 
-// The scattering event at which roulette starts unless the integrator's "rr_depth" says
-// otherwise: with 3, the first two bounces are always followed and the roulette first decides
-// after the third. README.md records the efficiency study behind this value (`verity bench
+// The non-specular scattering event at which roulette starts unless the integrator's
+// "rr_depth" says otherwise: with 3, a path is always followed through its first two
+// non-specular events, and the roulette first decides after the third. README.md records the
+// efficiency studies behind this value and behind not counting specular events (`verity bench
 // --rr-depth`).
 inline constexpr int kDefaultRouletteDepth = 3;
 
+// What the roulette reads of a path besides its throughput, brought up to date after each
+// sampled scattering event by record().
+struct RouletteHistory {
+  // Scattering events that sampled a non-delta lobe. Specular events (a mirror, smooth glass)
+  // do not count towards the roulette's start: a sampled specular event loses little or
+  // nothing, and counting it made the roulette end paths through glass and mirrors at their
+  // first diffuse bounces after them, where the paths that light a caustic have barely begun.
+  int nonDeltaEvents = 0;
+  // The product of the η² of the refractions a radiance path has made (1 for importance, which
+  // refraction does not scale; Veach 1997, §5.2). Radiance inside glass is scaled by 1/η²,
+  // which is no loss: the roulette reads throughput · etaScale, else it would end such paths
+  // too often and give the survivors large weights (fireflies).
+  float etaScale = 1;
+
+  void record(const BsdfSample& event, TransportMode mode) {
+    if (!event.isDelta()) ++nonDeltaEvents;
+    if (mode == TransportMode::Radiance) etaScale *= event.eta * event.eta;
+  }
+};
+
 class RussianRoulette {
  public:
-  // Roulette decides after scattering event `depth` (1 for the first) and every later one.
+  // Roulette decides once the path has made `depth` non-specular scattering events (1: from
+  // the first on), after every later event, specular ones included.
   explicit RussianRoulette(int depth = kDefaultRouletteDepth) : depth_(depth) {}
 
-  // Whether a path continues after scattering event `bounce` + 1 (`bounce` counts from 0),
-  // given `throughput`, the product of its scattering weights so far (divided by earlier
-  // survival probabilities, and excluding what the path started with, such as emitted power,
-  // which says nothing about how much a path has lost), and `etaScale`, the product of the
-  // η² of the refractions a radiance path has made (refractionEtaScale). The roulette reads
-  // throughput · etaScale: radiance inside glass is scaled by 1/η², which is no loss, and
-  // reading it would end such paths too often and give the survivors large weights
-  // (fireflies). Any function of the path may set the probability, so this stays unbiased;
-  // pbrt-v3's path tracer does the same. On survival `*survival` holds the probability to
-  // divide the throughput by (exactly 1 before roulette starts). Draws one sample from
-  // `sampler` only when roulette decides and the throughput is not zero.
-  bool survives(int bounce, const Color3& throughput, float etaScale, Sampler& sampler,
+  // Whether a path with `history` continues after its latest scattering event, given
+  // `throughput`, the product of its scattering weights so far (divided by earlier survival
+  // probabilities, and excluding what the path started with, such as emitted power, which says
+  // nothing about how much a path has lost). The survival probability is
+  // throughput · etaScale, clamped; any function of the path may set it, so this stays
+  // unbiased; pbrt-v3's path tracer reads the same product. On survival `*survival` holds the
+  // probability to divide the throughput by (exactly 1 before roulette starts). Draws one
+  // sample from `sampler` only when roulette decides and the throughput is not zero.
+  bool survives(const RouletteHistory& history, const Color3& throughput, Sampler& sampler,
                 float* survival) const;
 
   int depth() const { return depth_; }
@@ -44,12 +63,5 @@ class RussianRoulette {
   static constexpr float kMinSurvival = 0.05f;
   int depth_;
 };
-
-// What a sampled scattering event multiplies the `etaScale` of survives() by: η² for radiance
-// refracted across an interface of relative index η (the material scaled it by 1/η², Veach
-// 1997, §5.2), 1 for every other event and for importance, which refraction does not scale.
-inline float refractionEtaScale(const BsdfSample& s, TransportMode mode) {
-  return mode == TransportMode::Radiance ? s.eta * s.eta : 1.0f;
-}
 
 }  // namespace verity

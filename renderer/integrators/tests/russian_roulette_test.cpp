@@ -1,5 +1,6 @@
-// The one Russian roulette rule every path-walking integrator uses: where it starts, that a
-// depth beyond every bounce is no roulette at all, and its survival probabilities.
+// The one Russian roulette rule every path-walking integrator uses: where it starts (counting
+// non-specular events only), that a depth beyond every bounce is no roulette at all, and its
+// survival probabilities.
 #include "integrators/russian_roulette.h"
 
 #include <gtest/gtest.h>
@@ -32,18 +33,60 @@ class FixedSampler : public Sampler {
   float value_;
 };
 
+// A history of `n` non-specular events and no refraction.
+RouletteHistory afterEvents(int n) {
+  RouletteHistory h;
+  h.nonDeltaEvents = n;
+  return h;
+}
+
 TEST(RussianRoulette, NoDecisionBeforeItsDepth) {
   const RussianRoulette roulette(3);
   FixedSampler sampler(0.999f);
   float survival = 0;
-  for (int bounce : {0, 1}) {
-    EXPECT_TRUE(roulette.survives(bounce, Color3::Constant(1e-3f), 1, sampler, &survival));
+  for (int events : {0, 1, 2}) {
+    EXPECT_TRUE(
+        roulette.survives(afterEvents(events), Color3::Constant(1e-3f), sampler, &survival));
     EXPECT_EQ(survival, 1.0f);
   }
   EXPECT_EQ(sampler.draws, 0);
-  // After the third scattering event the roulette decides, with one draw.
-  EXPECT_FALSE(roulette.survives(2, Color3::Constant(1e-3f), 1, sampler, &survival));
+  // After the third non-specular scattering event the roulette decides, with one draw.
+  EXPECT_FALSE(roulette.survives(afterEvents(3), Color3::Constant(1e-3f), sampler, &survival));
   EXPECT_EQ(sampler.draws, 1);
+}
+
+// Specular events (smooth glass and mirrors sample delta lobes) do not bring the roulette's
+// start nearer; a non-specular event does, and once started the roulette decides after specular
+// events too.
+TEST(RussianRoulette, SpecularEventsDoNotCountTowardsItsStart) {
+  const RussianRoulette roulette(1);
+  const Color3 throughput = Color3::Constant(1e-3f);
+  FixedSampler sampler(0.999f);
+  float survival = 0;
+  RouletteHistory history;
+  for (float uLobe : {0.0f, 0.99f, 0.0f, 0.99f}) {  // reflections and refractions
+    const auto specular =
+        sampleSmoothDielectric(Vector3f(0.3f, 0, 0.9539f), 1.5f, uLobe, TransportMode::Radiance);
+    ASSERT_TRUE(specular && specular->isDelta());
+    history.record(*specular, TransportMode::Radiance);
+    EXPECT_TRUE(roulette.survives(history, throughput, sampler, &survival));
+  }
+  EXPECT_EQ(history.nonDeltaEvents, 0);
+  EXPECT_EQ(sampler.draws, 0);
+  BsdfSample diffuse;  // what a Lambertian surface samples
+  diffuse.lobe = kReflection | kDiffuse;
+  diffuse.weight = Color3::Constant(0.5f);
+  const std::optional<BsdfSample> rough = diffuse;
+  ASSERT_FALSE(rough->isDelta());
+  history.record(*rough, TransportMode::Radiance);
+  EXPECT_EQ(history.nonDeltaEvents, 1);
+  EXPECT_FALSE(roulette.survives(history, throughput, sampler, &survival));
+  EXPECT_EQ(sampler.draws, 1);
+  const auto specular =
+      sampleSmoothDielectric(Vector3f::UnitZ(), 1.5f, 0.0f, TransportMode::Radiance);
+  history.record(*specular, TransportMode::Radiance);
+  EXPECT_FALSE(roulette.survives(history, throughput, sampler, &survival));
+  EXPECT_EQ(sampler.draws, 2);
 }
 
 // A depth beyond every bounce is no roulette: no path ends, no weight changes and no sample is
@@ -52,8 +95,9 @@ TEST(RussianRoulette, VeryLargeDepthIsNoRoulette) {
   const RussianRoulette roulette(std::numeric_limits<int>::max());
   FixedSampler sampler(0.999f);
   float survival = 0;
-  for (int bounce = 0; bounce < 100000; ++bounce) {
-    ASSERT_TRUE(roulette.survives(bounce, Color3::Constant(1e-6f), 1, sampler, &survival));
+  for (int events = 0; events < 100000; ++events) {
+    ASSERT_TRUE(
+        roulette.survives(afterEvents(events), Color3::Constant(1e-6f), sampler, &survival));
     ASSERT_EQ(survival, 1.0f);
   }
   EXPECT_EQ(sampler.draws, 0);
@@ -71,47 +115,55 @@ TEST(RussianRoulette, SurvivalProbability) {
                         Case{Color3(0.01f, 0.02f, 0.0f), 0.05f}}) {
     float survival = 0;
     FixedSampler below(c.survival * 0.99f), above(c.survival);
-    EXPECT_TRUE(roulette.survives(0, c.throughput, 1, below, &survival));
+    EXPECT_TRUE(roulette.survives(afterEvents(1), c.throughput, below, &survival));
     EXPECT_EQ(survival, c.survival);
-    if (c.survival < 1) EXPECT_FALSE(roulette.survives(0, c.throughput, 1, above, &survival));
+    if (c.survival < 1) {
+      EXPECT_FALSE(roulette.survives(afterEvents(1), c.throughput, above, &survival));
+    }
   }
   FixedSampler sampler(0.0f);
   float survival = 0;
-  EXPECT_FALSE(roulette.survives(0, Color3::Zero(), 1, sampler, &survival));
+  EXPECT_FALSE(roulette.survives(afterEvents(1), Color3::Zero(), sampler, &survival));
   EXPECT_EQ(sampler.draws, 0);
 }
 
 // Roulette reads the throughput with the refractions' η² divided out: a radiance path of
 // scattering weights 0.73 · 0.73 that has entered glass of index 1.5 carries 0.73² / 1.5², yet
 // survives with probability 0.73², not 0.73² / 1.5² (it would then weigh 2.25 times too much
-// on survival: the fireflies of issue 28 on the glass cross-check scene).
+// on survival: fireflies on the glass cross-check scene).
 TEST(RussianRoulette, RefractionIsNoLoss) {
-  const RussianRoulette roulette(1);
+  const RussianRoulette roulette(0);
   const float eta = 1.5f, albedo2 = 0.73f * 0.73f;
   const auto entering =
       sampleSmoothDielectric(Vector3f::UnitZ(), eta, 0.99f, TransportMode::Radiance);
   ASSERT_TRUE(entering && (entering->lobe & kTransmission));
-  const float etaScale = refractionEtaScale(*entering, TransportMode::Radiance);
-  EXPECT_FLOAT_EQ(etaScale, eta * eta);
+  RouletteHistory history;
+  history.record(*entering, TransportMode::Radiance);
+  EXPECT_FLOAT_EQ(history.etaScale, eta * eta);
   const Color3 throughput = albedo2 * entering->weight;
   float survival = 0;
   FixedSampler sampler(0.0f);
-  EXPECT_TRUE(roulette.survives(0, throughput, etaScale, sampler, &survival));
+  EXPECT_TRUE(roulette.survives(history, throughput, sampler, &survival));
   EXPECT_FLOAT_EQ(survival, albedo2);
   // Leaving the glass scales radiance by η² and etaScale by 1/η²: they cancel again.
   const auto leaving =
       sampleSmoothDielectric(-Vector3f::UnitZ(), eta, 0.99f, TransportMode::Radiance);
   ASSERT_TRUE(leaving && (leaving->lobe & kTransmission));
-  EXPECT_FLOAT_EQ(etaScale * refractionEtaScale(*leaving, TransportMode::Radiance), 1.0f);
+  history.record(*leaving, TransportMode::Radiance);
+  EXPECT_FLOAT_EQ(history.etaScale, 1.0f);
   // Importance is not scaled by refraction, nor is a reflection: nothing to divide out.
   const auto importance =
       sampleSmoothDielectric(Vector3f::UnitZ(), eta, 0.99f, TransportMode::Importance);
   ASSERT_TRUE(importance && (importance->lobe & kTransmission));
-  EXPECT_EQ(refractionEtaScale(*importance, TransportMode::Importance), 1.0f);
+  RouletteHistory light;
+  light.record(*importance, TransportMode::Importance);
+  EXPECT_EQ(light.etaScale, 1.0f);
   const auto reflected =
       sampleSmoothDielectric(Vector3f::UnitZ(), eta, 0.0f, TransportMode::Radiance);
   ASSERT_TRUE(reflected && (reflected->lobe & kReflection));
-  EXPECT_EQ(refractionEtaScale(*reflected, TransportMode::Radiance), 1.0f);
+  RouletteHistory mirror;
+  mirror.record(*reflected, TransportMode::Radiance);
+  EXPECT_EQ(mirror.etaScale, 1.0f);
 }
 
 }  // namespace
