@@ -19,28 +19,30 @@ uint64_t SobolSampler::callHash() {
 
 // Each request is, with scramble = nestedUniformScramble = R ∘ LK ∘ R (R: reverseBits, LK:
 // laineKarrasPermutation) and seeds a, b, c from the call's hash,
-//   j = scramble(index, a),  x = scramble(sobolSample(j, 0), b),  y = scramble(sobolSample(j, 1),
-//   c).
-// Since sobolSample(j, 0) = R(j) and R ∘ R is the identity, x = R(LK(j, b)) and
-// j = R(LK(R(index), a)), and y = R(LK(R(sobolSample(j, 1)), c)) reads the mirrored table:
-// the same bits with three reversals instead of seven.
+//   j = scramble(index, a),
+//   x = scramble(sobolSample(j, 0), b),  y = scramble(sobolSample(j, 1), c).
+// Since sobolSample(j, 0) = R(j) and R ∘ R is the identity, j = R(LK(R(index), a)) and
+// x = R(LK(j, b)), and y = R(LK(R(sobolSample(j, 1)), c)) reads the mirrored table: the same
+// bits with three reversals instead of seven.
+uint32_t SobolSampler::shuffledIndex(uint64_t h) const {
+  return reverseBits(laineKarrasPermutation(mirroredIndex_, static_cast<uint32_t>(h)));
+}
+
+float SobolSampler::scrambledDimension0(uint32_t j, uint64_t h) {
+  return uniformFloat(reverseBits(laineKarrasPermutation(j, static_cast<uint32_t>(h >> 32))));
+}
+
 float SobolSampler::next1D() {
   const uint64_t h = callHash();
-  const uint32_t shuffled =
-      reverseBits(laineKarrasPermutation(mirroredIndex_, static_cast<uint32_t>(h)));
-  return uniformFloat(
-      reverseBits(laineKarrasPermutation(shuffled, static_cast<uint32_t>(h >> 32))));
+  return scrambledDimension0(shuffledIndex(h), h);
 }
 
 Point2f SobolSampler::next2D() {
   const uint64_t h = callHash();
+  const uint32_t j = shuffledIndex(h);
   const uint32_t yScramble = static_cast<uint32_t>(mix64(h));
-  const uint32_t shuffled =
-      reverseBits(laineKarrasPermutation(mirroredIndex_, static_cast<uint32_t>(h)));
-  return {
-      uniformFloat(reverseBits(laineKarrasPermutation(shuffled, static_cast<uint32_t>(h >> 32)))),
-      uniformFloat(
-          reverseBits(laineKarrasPermutation(sobolDimension1Mirrored(shuffled), yScramble)))};
+  return {scrambledDimension0(j, h),
+          uniformFloat(reverseBits(laineKarrasPermutation(sobolDimension1Mirrored(j), yScramble)))};
 }
 
 SamplerType sobolSamplerType() {

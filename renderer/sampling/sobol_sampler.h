@@ -31,6 +31,10 @@ class SobolSampler : public Sampler {
   // hashValues(seed, pixel, k) of the k-th call, folded one value at a time, so the pixel's
   // part is hashed once per pixel sample.
   uint64_t callHash();
+  // j, the call's shuffled sample index, from its hash h (sobol_sampler.cpp).
+  uint32_t shuffledIndex(uint64_t h) const;
+  // x, the call's scrambled dimension 0 of Sobol point j.
+  static float scrambledDimension0(uint32_t j, uint64_t h);
 
   uint64_t pixelHash_ = 0;
   uint32_t mirroredIndex_ = 0;  // the sample index with its bits reversed

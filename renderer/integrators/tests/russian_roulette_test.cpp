@@ -76,9 +76,8 @@ TEST(RussianRoulette, SpecularEventsDoNotCountTowardsItsStart) {
   BsdfSample diffuse;  // what a Lambertian surface samples
   diffuse.lobe = kReflection | kDiffuse;
   diffuse.weight = Color3::Constant(0.5f);
-  const std::optional<BsdfSample> rough = diffuse;
-  ASSERT_FALSE(rough->isDelta());
-  history.record(*rough, TransportMode::Radiance);
+  ASSERT_FALSE(diffuse.isDelta());
+  history.record(diffuse, TransportMode::Radiance);
   EXPECT_EQ(history.nonDeltaEvents, 1);
   EXPECT_FALSE(roulette.survives(history, throughput, sampler, &survival));
   EXPECT_EQ(sampler.draws, 1);
