@@ -20,7 +20,7 @@
 #include "validation/suite_samplers.h"
 
 namespace verity::validation {
-namespace {
+namespace sampler_agreement_test {
 
 constexpr int kWidth = 32;
 constexpr int kTileSize = 16;
@@ -59,5 +59,5 @@ TEST(SamplerAgreement, EverySamplerEstimatesTheIndependentSamplersImage) {
   EXPECT_EQ(family.decide("samplers against independent samples").rejections, 0);
 }
 
-}  // namespace
+}  // namespace sampler_agreement_test
 }  // namespace verity::validation
