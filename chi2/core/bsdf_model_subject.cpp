@@ -29,7 +29,7 @@ std::string BsdfModelSubject::format(const Eigen::Array3d& v) const {
 }
 
 double BsdfModelSubject::pdf(double phi, double z) const {
-  return model_.pdf(setup_.wi, setup_.frame.toLocal(sphereDirection(phi, z)));
+  return model_.pdf(setup_.wi, setup_.frame.toLocal(sphereDirectionAtLastAzimuth(phi, z)));
 }
 
 std::optional<Point2d> BsdfModelSubject::sample(pcg32& rng, Audit& audit) const {

@@ -56,9 +56,25 @@ Domain triangleDomain(int cells) {
   return {DomainKind::Triangle, cells, cells, 0, 1, 0, 1};
 }
 
-Vector3d sphereDirection(double phi, double z) {
+namespace {
+Vector3d sphereDirection(double cosPhi, double sinPhi, double z) {
   const double r = std::sqrt(std::max(0.0, 1 - z * z));
-  return {r * std::cos(phi), r * std::sin(phi), z};
+  return {r * cosPhi, r * sinPhi, z};
+}
+}  // namespace
+
+Vector3d sphereDirection(double phi, double z) {
+  return sphereDirection(std::cos(phi), std::sin(phi), z);
+}
+
+Vector3d sphereDirectionAtLastAzimuth(double phi, double z) {
+  thread_local double lastPhi = 0, cosPhi = 1, sinPhi = 0;
+  if (phi != lastPhi) {
+    lastPhi = phi;
+    cosPhi = std::cos(phi);
+    sinPhi = std::sin(phi);
+  }
+  return sphereDirection(cosPhi, sinPhi, z);
 }
 
 namespace {

@@ -121,6 +121,16 @@ TEST(FrameworkDomain, ConeTangentPointsBoundTheConesAzimuths) {
   EXPECT_TRUE(coneTangentPoints(axis, std::cos(60 * std::numbers::pi / 180)).empty());
 }
 
+TEST(FrameworkDomain, DirectionAtLastAzimuthIsTheDirection) {
+  // Runs of one azimuth, as an inner integral asks, then a new azimuth, a return to an
+  // earlier one, and 0 (the kept azimuth's starting value) after others.
+  const double calls[][2] = {{0.0, 0.5}, {0.0, -0.9}, {1.3, 0.2}, {1.3, 0.7},   {1.3, -1.0},
+                             {4.0, 0.1}, {1.3, 0.2},  {0.0, 0.3}, {6.2, 0.999}, {6.2, 0.0}};
+  for (const auto& [phi, z] : calls)
+    EXPECT_EQ(sphereDirectionAtLastAzimuth(phi, z), sphereDirection(phi, z))
+        << "phi " << phi << ", z " << z;
+}
+
 TEST(FrameworkSuite, AtLeast600Configurations) {
   const size_t n =
       suite::warpCases().size() + suite::microfacetCases().size() + suite::bsdfCases().size();
