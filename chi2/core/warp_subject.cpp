@@ -35,7 +35,8 @@ WarpSubject::WarpSubject(std::string name, WarpModel model, int resolution)
       domain_(domainOf(model_.domain, resolution)) {}
 
 double WarpSubject::pdf(double x, double y) const {
-  return model_.pdf(isDirectional(model_.domain) ? sphereDirection(x, y) : Vector3d(x, y, 0));
+  return model_.pdf(isDirectional(model_.domain) ? sphereDirectionAtLastAzimuth(x, y)
+                                                 : Vector3d(x, y, 0));
 }
 
 std::optional<Point2d> WarpSubject::sample(pcg32& rng, Audit& audit) const {
