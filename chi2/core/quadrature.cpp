@@ -252,9 +252,13 @@ CellIntegral integrateCell(const DensityFn& f, const DensityFeatures& features, 
   }
   const CellIntegral coarse =
       nested(f, features.breaksY, features.breaksX, near, &d, x0, x0 + w, y0, y0 + h, o);
-  if (options.verifyDepth == 0 || !(coarse.error > options.gridAbsTolerance / d.cells()))
+  // A large cell (relTolerance of its value above its share) that met relTolerance is as
+  // accurate as a density evaluated in single precision allows: a second level would only
+  // refine rounding steps (it took over half the rules of a rough dielectric's grid).
+  if (options.verifyDepth == 0 ||
+      !(coarse.error > std::max(options.gridAbsTolerance / d.cells(), o.cellAbsTolerance)))
     return coarse;
-  // The cell missed its share of the budget. Either a feature is not yet resolved, or the
+  // The cell missed its tolerance. Either a feature is not yet resolved, or the
   // density is a staircase of single-precision rounding steps (grazing Beckmann and GGX,
   // tiny roughness, the cancellation in ωi + ωo near −ωi): then every piece's |K15 − G7|
   // stays at the steps' size however far it is bisected, and the sum counts their errors,

@@ -48,9 +48,13 @@ struct QuadratureOptions {
   // Set per cell from gridAbsTolerance: an absolute error that every piece may claim its
   // share of, so that pieces a few ulps wide (graded towards a peak) stop refining.
   double cellAbsTolerance = 0;
-  // A cell whose error estimate exceeds its share of gridAbsTolerance is integrated again
-  // with this many more bisections and ten times tighter tolerances, and the two levels
-  // are compared (integrateCell); 0 turns the comparison off.
+  // A cell whose error estimate exceeds the tolerance it was integrated to (its share of
+  // gridAbsTolerance, or relTolerance of its pilot estimate where that is larger: a cell
+  // holding more than share/relTolerance of the mass cannot meet its share in single
+  // precision) is integrated again with this many more bisections and ten times tighter
+  // tolerances, and the two levels are compared (integrateCell); 0 turns the comparison
+  // off. The grid's summed estimate is therefore about gridAbsTolerance + relTolerance·∫f
+  // at most (2·10⁻⁵ for a pdf), a fifth of the integral check's tolerance.
   unsigned verifyDepth = 2;
 };
 

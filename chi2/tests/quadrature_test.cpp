@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <numbers>
 
@@ -119,6 +120,35 @@ TEST(FrameworkQuadratureBounds, UnresolvableRippleIsNotSummedAsError) {
   // One level alone sums the ripple (1.2e-3, an INCONCLUSIVE verdict); two levels agree to
   // 1.3e-12 of a true error of 4e-14.
   EXPECT_LT(r.error, 1e-3 * singleError) << "one level " << singleError << ", two " << r.error;
+}
+
+TEST(FrameworkQuadratureBounds, ACellThatMetItsRelativeToleranceIsNotIntegratedAgain) {
+  // A Gaussian of σ = 0.1 on 16 × 16 cells with a ripple of relative size 8·10⁻⁶ below any
+  // piece (the rounding steps of a density evaluated in single precision): each central cell
+  // holds about 1.5% of the mass, so relTolerance of its value (1.5·10⁻⁷) exceeds its share
+  // of gridAbsTolerance (3.9·10⁻⁸), which no refinement of the steps would meet. Met to
+  // relTolerance, such a cell needs no second level: every call of the two-level quadrature
+  // is one of the single level's.
+  const double s = 0.1, lambda = kPi * 1e-8;
+  std::atomic<long long> calls{0};
+  const DensityFn f = [&](double x, double y) {
+    ++calls;
+    const double dx = x - 0.5, dy = y - 0.5;
+    const double ripple =
+        1 + 8e-6 * std::sin(2 * kPi * dx / lambda) * std::sin(2 * kPi * dy / lambda);
+    return ripple * std::exp(-(dx * dx + dy * dy) / (2 * s * s)) / (2 * kPi * s * s);
+  };
+  QuadratureOptions single;
+  single.verifyDepth = 0;
+  integrateGrid(f, squareDomain(16), single);
+  const long long singleCalls = calls.exchange(0);
+  const CellIntegral r = grid(f, squareDomain(16));
+  EXPECT_EQ(calls, singleCalls);
+  // The ripple integrates to 0 (as in UnresolvableRippleIsNotSummedAsError).
+  const double truth = std::pow(std::erf(0.5 / (s * std::sqrt(2.0))), 2);
+  const QuadratureOptions defaults;
+  EXPECT_GE(r.error, std::fabs(r.value - truth)) << "value " << r.value;
+  EXPECT_LE(r.error, defaults.gridAbsTolerance + defaults.relTolerance * r.value);
 }
 
 TEST(FrameworkQuadratureBounds, GradedPiecesDoNotInflateTheEstimate) {
