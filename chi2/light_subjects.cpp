@@ -74,7 +74,7 @@ class LightSubject : public Subject {
   const Domain& domain() const override { return domain_; }
 
   double pdf(double phi, double z) const override {
-    const Vector3f d = sphereDirection(phi, z).cast<float>();
+    const Vector3f d = sphereDirectionAtLastAzimuth(phi, z).cast<float>();
     if (setup_.sampling == LightSampling::SphereArea)
       // Uniform by area: per dφ d(cos θ) about the centre, pdfArea · r².
       return double(sphere_->sampleArea(Point2f(0.5f, 0.5f)).pdf) * sphere_->radius() *

@@ -47,10 +47,10 @@ Domain triangleDomain(int cells);
 
 // Sphere parameterisation and its inverse (unit vectors; the inverse normalises).
 Vector3d sphereDirection(double phi, double z);
-// sphereDirection(φ, z) for a pdf on the sphere (BSDFs, directional warps) evaluated by the
-// quadrature, whose inner integrals ask for many z at one φ: cos φ and sin φ are computed
-// again only when φ changes (a tenth of a rough dielectric's test time was spent recomputing
-// them). Same values; one per thread.
+// sphereDirection(φ, z) for a pdf on the sphere (BSDFs, directional warps, lights) evaluated
+// by the quadrature, whose inner integrals ask for many z at one φ: cos φ and sin φ are
+// computed again only when φ changes (a tenth of a rough dielectric's test time was spent
+// recomputing them). Same values; one per thread.
 Vector3d sphereDirectionAtLastAzimuth(double phi, double z);
 Point2d sphereCoords(const Vector3d& v);
 // The cos θ values at azimuth φ where a direction meets the cone ω·axis = cosAngle (none,

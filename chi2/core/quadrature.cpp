@@ -241,10 +241,11 @@ CellIntegral integrateCell(const DensityFn& f, const DensityFeatures& features, 
   pilot.maxDepth = 0;
   const double estimate = std::fabs(
       nested(f, features.breaksY, features.breaksX, near, &d, x0, x0 + w, y0, y0 + h, pilot).value);
+  const double share = options.gridAbsTolerance / d.cells();
   QuadratureOptions o = options;
-  o.cellAbsTolerance = options.gridAbsTolerance / d.cells();
+  o.cellAbsTolerance = share;
   if (estimate > 0) {
-    const double rel = options.gridAbsTolerance / d.cells() / estimate;
+    const double rel = share / estimate;
     o.relTolerance = std::clamp(rel, options.relTolerance, options.maxRelTolerance);
     o.outerRelTolerance = std::clamp(10 * rel, options.outerRelTolerance, options.maxRelTolerance);
     // What the cell may be off by, in absolute terms, whatever its pieces' sizes.
@@ -255,8 +256,7 @@ CellIntegral integrateCell(const DensityFn& f, const DensityFeatures& features, 
   // A large cell (relTolerance of its value above its share) that met relTolerance is as
   // accurate as a density evaluated in single precision allows: a second level would only
   // refine rounding steps (it took over half the rules of a rough dielectric's grid).
-  if (options.verifyDepth == 0 ||
-      !(coarse.error > std::max(options.gridAbsTolerance / d.cells(), o.cellAbsTolerance)))
+  if (options.verifyDepth == 0 || !(coarse.error > std::max(share, o.cellAbsTolerance)))
     return coarse;
   // The cell missed its tolerance. Either a feature is not yet resolved, or the
   // density is a staircase of single-precision rounding steps (grazing Beckmann and GGX,

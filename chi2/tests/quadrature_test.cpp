@@ -124,9 +124,9 @@ TEST(FrameworkQuadratureBounds, UnresolvableRippleIsNotSummedAsError) {
 
 TEST(FrameworkQuadratureBounds, ACellThatMetItsRelativeToleranceIsNotIntegratedAgain) {
   // A Gaussian of σ = 0.1 on 16 × 16 cells with a ripple of relative size 8·10⁻⁶ below any
-  // piece (the rounding steps of a density evaluated in single precision): each central cell
-  // holds about 1.5% of the mass, so relTolerance of its value (1.5·10⁻⁷) exceeds its share
-  // of gridAbsTolerance (3.9·10⁻⁸), which no refinement of the steps would meet. Met to
+  // piece (the rounding steps of a density evaluated in single precision): each of the four
+  // central cells holds 5.5% of the mass, so relTolerance of its value (5.5·10⁻⁷) exceeds its
+  // share of gridAbsTolerance (3.9·10⁻⁸), which no refinement of the steps would meet. Met to
   // relTolerance, such a cell needs no second level: every call of the two-level quadrature
   // is one of the single level's.
   const double s = 0.1, lambda = kPi * 1e-8;
