@@ -14,6 +14,8 @@
 # (no file defines a macro before its includes). VERITY_PRECOMPILED_HEADERS=OFF compiles every
 # file on its own, which shows a missing include. ccache reuses its results for these files
 # only with CCACHE_SLOPPINESS=pch_defines,time_macros; without it, it compiles them.
+include(VerityTargets)
+
 option(VERITY_PRECOMPILED_HEADERS "Precompile the third-party headers most files include" ON)
 
 set(VERITY_PRECOMPILED_LIBRARY_HEADERS
@@ -79,15 +81,4 @@ function(verity_precompile_headers)
       target_precompile_headers(${target} REUSE_FROM verity_renderer)
     endif()
   endforeach()
-endfunction()
-
-# verity_targets_below(DIR OUT): the targets defined in DIR and the folders below it.
-function(verity_targets_below dir out)
-  get_property(targets DIRECTORY ${dir} PROPERTY BUILDSYSTEM_TARGETS)
-  get_property(subdirectories DIRECTORY ${dir} PROPERTY SUBDIRECTORIES)
-  foreach(subdirectory ${subdirectories})
-    verity_targets_below(${subdirectory} below)
-    list(APPEND targets ${below})
-  endforeach()
-  set(${out} ${targets} PARENT_SCOPE)
 endfunction()

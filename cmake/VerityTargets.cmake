@@ -1,0 +1,10 @@
+# verity_targets_below(DIR OUT): the targets defined in DIR and the folders below it.
+function(verity_targets_below dir out)
+  get_property(targets DIRECTORY ${dir} PROPERTY BUILDSYSTEM_TARGETS)
+  get_property(subdirectories DIRECTORY ${dir} PROPERTY SUBDIRECTORIES)
+  foreach(subdirectory ${subdirectories})
+    verity_targets_below(${subdirectory} below)
+    list(APPEND targets ${below})
+  endforeach()
+  set(${out} ${targets} PARENT_SCOPE)
+endfunction()
