@@ -15,8 +15,14 @@ DigitFraction radicalInverse(uint32_t index, uint32_t base, DigitScramble scramb
   // Plain inverses stop with the index's digits; scrambled ones go on to below 2^-24.
   for (int j = 0; rest > 0 || (scramble != DigitScramble::None && x.denominator < (1u << 24));
        ++j) {
-    const uint32_t next = rest / base, digit = rest - next * base;
-    rest = next;
+    // Past the index's digits every digit is 0: no division (a scrambled base-2 inverse of a
+    // sample index below 2^11 has 13 such digits of its 24).
+    uint32_t digit = 0;
+    if (rest > 0) {
+      const uint32_t next = rest / base;
+      digit = rest - next * base;
+      rest = next;
+    }
     uint32_t permuted = digit;
     if (scramble != DigitScramble::None) {
       const uint64_t h =
@@ -24,7 +30,13 @@ DigitFraction radicalInverse(uint32_t index, uint32_t base, DigitScramble scramb
       // m in [1, base) and s in [0, base) by multiply-and-shift (bias below base / 2^32).
       const uint32_t m = 1 + static_cast<uint32_t>(((h & 0xffffffffu) * (base - 1)) >> 32);
       const uint32_t s = static_cast<uint32_t>(((h >> 32) * base) >> 32);
-      permuted = static_cast<uint32_t>((uint64_t(m) * digit + s) % base);
+      // m·digit + s < base², which 32 bits hold for bases below 2^16; 0 maps to s itself.
+      if (digit == 0)
+        permuted = s;
+      else if (base < (1u << 16))
+        permuted = (m * digit + s) % base;
+      else
+        permuted = static_cast<uint32_t>((uint64_t(m) * digit + s) % base);
     }
     x.numerator = x.numerator * base + permuted;
     x.denominator *= base;
