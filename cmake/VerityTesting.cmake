@@ -29,6 +29,21 @@ function(verity_discover_tests target)
   endif()
 endfunction()
 
+# verity_add_suite_test(TARGET SUITE LABELS label...): one CTest test that runs the GoogleTest
+# suite SUITE of TARGET whole. For a suite whose tests share renders that its SetUpTestSuite
+# makes once per process: registered test by test, each test's process made them again. Leave
+# SUITE out of TARGET's verity_discover_tests (FILTER -SUITE.*). A failure names the test; a
+# suite that selects no test (renamed, say) fails rather than passing with nothing run.
+function(verity_add_suite_test target suite)
+  cmake_parse_arguments(ARG "" "" "LABELS" ${ARGN})
+  add_test(NAME ${suite} COMMAND ${target} --gtest_filter=${suite}.*)
+  set_tests_properties(${suite} PROPERTIES LABELS "${ARG_LABELS}"
+                                           FAIL_REGULAR_EXPRESSION "Running 0 tests from")
+  if("quick" IN_LIST ARG_LABELS)
+    set_property(GLOBAL APPEND PROPERTY VERITY_QUICK_TEST_TARGETS ${target})
+  endif()
+endfunction()
+
 # verity_test_runs_program(TARGET): TARGET's tests run the `verity` program as a child process,
 # named to them by VERITY_BINARY. TARGET is linked after the program, so that a test executable
 # always runs a program built from the same sources; its files compile without waiting for it.
