@@ -1,14 +1,31 @@
-# verity_discover_tests(TARGET [NAME name] [PREFIX prefix] [FILTER gtest-filter] LABELS label...):
+# verity_discover_tests(TARGET [NAME name] [PREFIX prefix] [FILTER gtest-filter]
+#                       [WHOLE_SUITES suite...] LABELS label...):
 # registers a GoogleTest executable's tests (those FILTER selects) with CTest and gives every
 # discovered test all the labels. NAME tells apart several registrations of one target.
 # Labels are set after discovery because CMake 3.25's gtest discovery flattens list values
 # passed through PROPERTIES (`LABELS "quick;renderer"` would keep only "quick"). A target with
 # label quick joins the `quick_tests` target (see verity_add_quick_tests_target).
+# Each of WHOLE_SUITES is left out of the discovery and registered as one CTest test named
+# after it, which runs the suite whole: for a suite whose tests share renders that its
+# SetUpTestSuite makes once per process (registered test by test, each test's process made them
+# again). A failure names the test; a suite that selects no test (renamed, say) fails rather
+# than passing with nothing run.
 function(verity_discover_tests target)
-  cmake_parse_arguments(ARG "" "NAME;PREFIX;FILTER" "LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "NAME;PREFIX;FILTER" "WHOLE_SUITES;LABELS" ${ARGN})
   if(NOT ARG_NAME)
     set(ARG_NAME ${target})
   endif()
+  foreach(suite ${ARG_WHOLE_SUITES})
+    # gtest filters read POSITIVE-NEGATIVE, the negative patterns joined by ':'.
+    if(ARG_FILTER MATCHES "-")
+      string(APPEND ARG_FILTER ":${suite}.*")
+    else()
+      string(APPEND ARG_FILTER "-${suite}.*")
+    endif()
+    add_test(NAME ${suite} COMMAND ${target} --gtest_filter=${suite}.*)
+    set_tests_properties(${suite} PROPERTIES LABELS "${ARG_LABELS}"
+                                             FAIL_REGULAR_EXPRESSION "Running 0 tests from")
+  endforeach()
   set(options)
   if(ARG_PREFIX)
     list(APPEND options TEST_PREFIX ${ARG_PREFIX})
@@ -24,21 +41,6 @@ function(verity_discover_tests target)
                      "  set_tests_properties(\${${ARG_NAME}_TESTS} PROPERTIES LABELS \"${labels}\")\n"
                      "endif()\n")
   set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${file})
-  if("quick" IN_LIST ARG_LABELS)
-    set_property(GLOBAL APPEND PROPERTY VERITY_QUICK_TEST_TARGETS ${target})
-  endif()
-endfunction()
-
-# verity_add_suite_test(TARGET SUITE LABELS label...): one CTest test that runs the GoogleTest
-# suite SUITE of TARGET whole. For a suite whose tests share renders that its SetUpTestSuite
-# makes once per process: registered test by test, each test's process made them again. Leave
-# SUITE out of TARGET's verity_discover_tests (FILTER -SUITE.*). A failure names the test; a
-# suite that selects no test (renamed, say) fails rather than passing with nothing run.
-function(verity_add_suite_test target suite)
-  cmake_parse_arguments(ARG "" "" "LABELS" ${ARGN})
-  add_test(NAME ${suite} COMMAND ${target} --gtest_filter=${suite}.*)
-  set_tests_properties(${suite} PROPERTIES LABELS "${ARG_LABELS}"
-                                           FAIL_REGULAR_EXPRESSION "Running 0 tests from")
   if("quick" IN_LIST ARG_LABELS)
     set_property(GLOBAL APPEND PROPERTY VERITY_QUICK_TEST_TARGETS ${target})
   endif()
