@@ -4,23 +4,20 @@
 #include <CLI/CLI.hpp>
 #include <new>
 
-#include "chi2/chi2_command.h"
+#include "cli/exit_status.h"
+#include "commands/bench_command.h"
+#include "commands/chi2_command.h"
+#include "commands/compare_command.h"
+#include "commands/error_command.h"
+#include "commands/reference_command.h"
 #include "commands/render_command.h"
+#include "commands/report_command.h"
+#include "commands/study_command.h"
 #include "core/error.h"
 #include "distributed/process_group.h"
-#include "validation/compare_command.h"
-#include "validation/studies/bench_command.h"
-#include "validation/studies/error_command.h"
-#include "validation/studies/reference_command.h"
-#include "validation/studies/report_command.h"
-#include "validation/studies/study_command.h"
 #include "version.h"
 
 namespace {
-
-// The exit status of a command line that cannot be parsed (an unknown option, a value out of
-// range), for every command: the status compare and chi2 give any input they cannot use.
-constexpr int kBadCommandLine = 2;
 
 // An error ends the whole job under MPI: the other ranks would wait for this one forever.
 int fail(const verity::ProcessGroup& group, const std::string& message) {
@@ -60,7 +57,7 @@ int main(int argc, char** argv) {
     return e.get_exit_code();
   } catch (const CLI::ParseError& e) {
     const int shown = app.exit(e);  // prints the help, the version or the error
-    const int code = shown == 0 ? 0 : kBadCommandLine;
+    const int code = shown == 0 ? 0 : verity::kBadInputStatus;
     if (code != 0 && group.distributed()) group.abort(code);
     return code;
   } catch (const verity::VerityError& e) {

@@ -1,17 +1,17 @@
 # The installable part of Verity: libraries that other renderers link to test their own
 # code (find_package(Verity CONFIG) gives Verity::chi2 and Verity::stats). Each packaged
-# library keeps its headers in one folder that includes nothing outside it but system and
-# third-party headers, and includes its own headers by bare name, so the folder can be
-# installed as include/verity/<name>/ and read there as <verity/<name>/header.h>.
+# library keeps its headers in include/verity/<name>/ beside its src/ and tests/, includes
+# nothing outside it but system and third-party headers, and is read as
+# <verity/<name>/header.h> in the tree as once installed.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(VERITY_PACKAGE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/Verity)
 
-# verity_package_library(TARGET target EXPORT_NAME name HEADERS folder): installs the
-# target's archive and the folder's headers, and exports the target as Verity::<name>.
+# verity_package_library(TARGET target EXPORT_NAME name): installs the target's archive and
+# the headers of the calling folder's include/verity/<name>/, and exports it as Verity::<name>.
 function(verity_package_library)
-  cmake_parse_arguments(ARG "" "TARGET;EXPORT_NAME;HEADERS" "" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET;EXPORT_NAME" "" ${ARGN})
   set_target_properties(${ARG_TARGET} PROPERTIES EXPORT_NAME ${ARG_EXPORT_NAME})
   target_include_directories(${ARG_TARGET} INTERFACE
                              $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
@@ -19,7 +19,8 @@ function(verity_package_library)
   install(TARGETS ${ARG_TARGET} EXPORT VerityTargets
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
           LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-  file(GLOB headers CONFIGURE_DEPENDS ${ARG_HEADERS}/*.h)
+  file(GLOB headers CONFIGURE_DEPENDS
+       ${CMAKE_CURRENT_SOURCE_DIR}/include/verity/${ARG_EXPORT_NAME}/*.h)
   install(FILES ${headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/verity/${ARG_EXPORT_NAME})
 endfunction()
 

@@ -1,7 +1,8 @@
 // `verity compare` run as the program: its exit status reaches the shell through main()
 // (0 agree, 1 differ, 2 bad input), for sets of renders given with -a and -b. The renders are
 // constant images a fixed step above or below a level (deterministic, no random numbers), so
-// each set's mean is known exactly; validation/tests/compare_*_test.cpp test the statistics.
+// each set's mean is known exactly; compare_inputs_test.cpp and compare_sets_test.cpp beside it
+// test the statistics.
 #include <gtest/gtest.h>
 
 #include <filesystem>

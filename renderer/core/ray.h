@@ -5,6 +5,11 @@
 
 namespace verity {
 
+// The largest coordinate magnitude a scene may have, camera and lens included: squared
+// distances between its points stay finite in single precision, and the ray origins Embree
+// accepts (below about 1.8e18) stay in range after the origin offsets.
+inline constexpr float kMaxSceneCoordinate = 1e15f;
+
 struct Ray {
   Point3f o = Point3f::Zero();
   Vector3f d = Vector3f::UnitZ();

@@ -12,7 +12,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "textures/image_texture.h"
+#include "film/srgb.h"
 
 namespace verity {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "integrators/integrator.h"
-#include "scene/key_declaration.h"
+#include "params/key_declaration.h"
 
 namespace verity {
 

@@ -9,7 +9,7 @@
 
 #include "integrators/bdpt.h"
 #include "integrators/russian_roulette.h"
-#include "scene/json_node.h"
+#include "params/json_node.h"
 
 namespace verity {
 

@@ -20,7 +20,7 @@
 
 #include "lights/light.h"
 #include "materials/material.h"
-#include "scene/interaction.h"
+#include "shapes/interaction.h"
 
 namespace verity {
 

@@ -1,6 +1,6 @@
 #include "lights/background_registry.h"
 
-#include "scene/json_node.h"
+#include "params/json_node.h"
 
 namespace verity {
 

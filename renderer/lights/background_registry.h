@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "lights/environment_light.h"
-#include "scene/key_declaration.h"
+#include "params/key_declaration.h"
 
 namespace verity {
 

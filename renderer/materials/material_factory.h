@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "materials/material.h"
-#include "scene/json_node.h"
+#include "params/json_node.h"
 #include "textures/texture_factory.h"
 
 namespace verity {

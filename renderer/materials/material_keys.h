@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "scene/key_declaration.h"
+#include "params/key_declaration.h"
 
 namespace verity {
 

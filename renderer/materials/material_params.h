@@ -2,7 +2,7 @@
 #pragma once
 
 #include "materials/microfacet.h"
-#include "scene/json_node.h"
+#include "params/json_node.h"
 
 namespace verity {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/key_declaration.h"
+#include "params/key_declaration.h"
 
 namespace verity {
 

@@ -14,7 +14,7 @@
 // narrower than 1e-3 rad and its half-vector formulas lose all precision as ior → 1. There
 // sample() draws only delta lobes (Fresnel reflection or straight pass-through, as the
 // smooth dielectric does) and eval() and pdf() are 0: a chi-square test of it has no valid
-// sample and is INCONCLUSIVE, never PASSED (chi2/tests/degenerate_test.cpp).
+// sample and is INCONCLUSIVE, never PASSED (chi2/suite/tests/degenerate_test.cpp).
 #pragma once
 
 #include "materials/material.h"

@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "core/hash.h"
+#include "params/json_node.h"
 #include "sampling/independent_sampler.h"
-#include "scene/json_node.h"
 
 namespace verity {
 

@@ -2,9 +2,9 @@
 #include <cctype>
 
 #include "core/error.h"
+#include "params/json_node.h"
 #include "sampling/sampler.h"
 #include "sampling/sampler_registry.h"
-#include "scene/json_node.h"
 
 namespace verity {
 

@@ -18,11 +18,6 @@
 
 namespace verity {
 
-// The largest coordinate magnitude a scene may have, camera and lens included: squared
-// distances between its points stay finite in single precision, and the ray origins Embree
-// accepts (below about 1.8e18) stay in range after the origin offsets.
-inline constexpr float kMaxSceneCoordinate = 1e15f;
-
 // What the renderer must simulate for this scene; integrators skip the rest.
 struct SceneSummary {
   size_t shapes = 0, primitives = 0, areaLights = 0, materials = 0, texturedMaterials = 0;

@@ -1,6 +1,6 @@
 #include "shapes/quad.h"
 
-#include "scene/json_node.h"
+#include "params/json_node.h"
 
 namespace verity {
 

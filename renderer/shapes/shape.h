@@ -6,7 +6,7 @@
 
 #include <optional>
 
-#include "scene/interaction.h"
+#include "shapes/interaction.h"
 
 namespace verity {
 

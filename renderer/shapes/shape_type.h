@@ -8,7 +8,7 @@
 #include <string>
 
 #include "core/transform.h"
-#include "scene/key_declaration.h"
+#include "params/key_declaration.h"
 
 namespace verity {
 

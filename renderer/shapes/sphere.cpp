@@ -1,7 +1,7 @@
 #include "shapes/sphere.h"
 
+#include "params/json_node.h"
 #include "sampling/warp.h"
-#include "scene/json_node.h"
 
 namespace verity {
 

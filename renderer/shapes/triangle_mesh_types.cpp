@@ -1,6 +1,6 @@
 // The scene format's triangle surfaces: "mesh", read from an OBJ file, and "triangle", given
 // inline. Both become a TriangleMesh in world space.
-#include "scene/json_node.h"
+#include "params/json_node.h"
 #include "shapes/obj_loader.h"
 #include "shapes/triangle_mesh.h"
 

@@ -1,6 +1,6 @@
 #include "textures/checker.h"
 
-#include "scene/json_node.h"
+#include "params/json_node.h"
 #include "textures/texture_factory.h"
 
 namespace verity {

@@ -8,18 +8,11 @@
 
 #include "core/error.h"
 #include "film/image_io.h"
-#include "scene/json_node.h"
+#include "film/srgb.h"
+#include "params/json_node.h"
 #include "textures/texture_factory.h"
 
 namespace verity {
-
-float srgbToLinear(float v) {
-  return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
-}
-
-float linearToSrgb(float v) {
-  return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-}
 
 namespace {
 // The R, G and B planes of an OpenEXR file, interleaved. Its values must be finite and not

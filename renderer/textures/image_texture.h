@@ -31,8 +31,4 @@ class ImageTexture : public Texture {
 // The scene format's "image".
 TextureType imageTextureType();
 
-// The exact sRGB transfer curve (IEC 61966-2-1).
-float srgbToLinear(float v);
-float linearToSrgb(float v);
-
 }  // namespace verity

@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 #include <stb_perlin.h>
 
-#include "scene/json_node.h"
-#include "scene/scene.h"
+#include "core/ray.h"
+#include "params/json_node.h"
 #include "textures/texture_factory.h"
 
 namespace verity {

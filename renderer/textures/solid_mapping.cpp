@@ -1,7 +1,7 @@
 #include "textures/solid_mapping.h"
 
-#include "scene/json_node.h"
-#include "scene/transform_parser.h"
+#include "params/json_node.h"
+#include "params/transform_parser.h"
 
 namespace verity {
 

@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "core/transform.h"
-#include "scene/key_declaration.h"
+#include "params/key_declaration.h"
 
 namespace verity {
 

@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "scene/json_node.h"
+#include "params/json_node.h"
 #include "textures/texture.h"
 
 namespace verity {

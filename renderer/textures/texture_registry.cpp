@@ -1,6 +1,6 @@
 #include "textures/texture_registry.h"
 
-#include "scene/json_node.h"
+#include "params/json_node.h"
 #include "textures/checker.h"
 #include "textures/image_texture.h"
 #include "textures/marble.h"

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "scene/key_declaration.h"
+#include "params/key_declaration.h"
 #include "textures/texture.h"
 
 namespace verity {

@@ -13,7 +13,7 @@
 //     integrators (suite_samplers.h).
 //   - One Holm family over every test of every scene and integrator: family-wise level 1%.
 //   - Each comparison's relative difference of the whole image's mean, per channel, with its
-//     standard error, is printed for the README's table.
+//     standard error, is printed for reports/validation-findings.md.
 // Seeds are fixed by the names of the scene, integrator and batch (hashString), never tuned.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -24,10 +24,10 @@
 #include <string>
 
 #include "film/image_io.h"
+#include "loader/scene_loader.h"
 #include "peer_comparison.h"
-#include "scene/scene_loader.h"
-#include "validation/batch_regions.h"
-#include "validation/comparison_family.h"
+#include "validation/compare/batch_regions.h"
+#include "validation/compare/comparison_family.h"
 #include "validation/studies/timed_render.h"
 
 namespace verity::validation {

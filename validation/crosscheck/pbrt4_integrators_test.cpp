@@ -23,9 +23,9 @@
 #include <vector>
 
 #include "film/image_io.h"
-#include "validation/image_comparison.h"
-#include "validation/render_set_side.h"
-#include "validation/side_loading.h"
+#include "validation/compare/image_comparison.h"
+#include "validation/compare/render_set_side.h"
+#include "validation/compare/side_loading.h"
 
 namespace verity::validation {
 namespace {
@@ -142,8 +142,8 @@ TEST(Pbrt4Integrators, LightpathAndBdptDisagreeWithShadingNormals) {
   }
 }
 
-// Every comparison of the survey that agreed (README.md, "pbrt-v4's integrators compared with
-// each other"), and the follow-ups that agreed, at level 1% / K each.
+// Every comparison of the survey that agreed (reports/validation-findings.md,
+// "pbrt-v4's integrators compared with each other"), and the follow-ups that agreed, at level 1% / K each.
 const std::vector<Pair> kAgreeing = {
     {"area-box", "path", "volpath", ""},
     {"area-box", "path", "simplepath", ""},
@@ -167,7 +167,7 @@ const std::vector<Pair> kAgreeing = {
     {"visible-light", "path", "bdpt", ""},
     {"flat-normals", "path", "bdpt", ""},
     // Survey rejections that fresh renders with more samples per pixel did not repeat
-    // (README.md: rare events and heavy tails at 256 spp).
+    // (reports/validation-findings.md: rare events and heavy tails at 256 spp).
     {"env-ground", "path", "simplepath", "followup-1024spp"},
     {"delta-lights", "path", "simplepath-nobsdf", "followup-1024spp"},
     {"flat-normals", "path", "lightpath", "followup-4096spp"},

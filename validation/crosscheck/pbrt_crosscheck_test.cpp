@@ -11,16 +11,16 @@
 //   - One Holm family over every test of every scene and integrator: family-wise level 1%.
 //   - Each comparison's relative difference of the whole image's mean, per channel, with its
 //     standard error (the whole image as one batch region on both sides), is printed for the
-//     README's table.
+//     table of reports/validation-findings.md.
 // Seeds are fixed by the names of the scene, integrator and batch (hashString), never tuned.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
+#include "loader/scene_loader.h"
 #include "peer_comparison.h"
-#include "scene/scene_loader.h"
-#include "validation/comparison_family.h"
+#include "validation/compare/comparison_family.h"
 
 namespace verity::validation {
 namespace {

@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "film/image_io.h"
-#include "validation/batch_regions.h"
+#include "validation/compare/batch_regions.h"
+#include "validation/compare/suite_samplers.h"
 #include "validation/studies/timed_render.h"
-#include "validation/suite_samplers.h"
 
 namespace verity::validation {
 

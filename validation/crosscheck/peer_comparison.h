@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene_loader.h"
-#include "validation/comparison_family.h"
+#include "loader/scene_loader.h"
+#include "validation/compare/comparison_family.h"
 
 namespace verity::validation {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "scene/scene_loader.h"
+#include "loader/scene_loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

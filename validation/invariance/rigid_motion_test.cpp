@@ -26,12 +26,12 @@
 #include "integrators/integrator_registry.h"
 #include "integrators/integrator_settings.h"
 #include "render/renderer.h"
-#include "validation/batch_regions.h"
-#include "validation/comparison_family.h"
+#include "validation/compare/batch_regions.h"
+#include "validation/compare/comparison_family.h"
+#include "validation/compare/suite_samplers.h"
 #include "validation/studies/seeds.h"
 #include "validation/studies/study_scene.h"
 #include "validation/studies/timed_render.h"
-#include "validation/suite_samplers.h"
 
 namespace verity::validation {
 namespace {

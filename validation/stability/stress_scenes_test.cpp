@@ -18,11 +18,11 @@
 #include "film/image_io.h"
 #include "integrators/integrator_registry.h"
 #include "integrators/integrator_settings.h"
+#include "loader/scene_loader.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
-#include "validation/comparison_report.h"
-#include "validation/exr_statistics.h"
-#include "validation/image_comparison.h"
+#include "validation/compare/comparison_report.h"
+#include "validation/compare/exr_statistics.h"
+#include "validation/compare/image_comparison.h"
 
 namespace verity::validation {
 namespace {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "integrators/integrator_settings.h"
-#include "scene/scene_loader.h"
+#include "loader/scene_loader.h"
 #include "validation/studies/json_lines.h"
 #include "validation/studies/machine_info.h"
 #include "validation/studies/record_fields.h"

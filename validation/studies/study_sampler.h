@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene_loader.h"
+#include "loader/scene_loader.h"
 
 namespace verity::studies {
 

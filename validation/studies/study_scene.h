@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "integrators/integrator_settings.h"
-#include "scene/scene_at_width.h"
+#include "loader/scene_at_width.h"
 
 namespace verity::studies {
 

@@ -7,8 +7,8 @@
 
 #include "distributed/process_group.h"
 #include "film/film.h"
+#include "loader/scene_loader.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
 
 namespace verity::studies {
 

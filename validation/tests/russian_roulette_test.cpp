@@ -15,9 +15,9 @@
 
 #include <filesystem>
 
-#include "scene/scene_at_width.h"
+#include "loader/scene_at_width.h"
 #include "tile_batches.h"
-#include "validation/comparison_family.h"
+#include "validation/compare/comparison_family.h"
 
 namespace verity::validation {
 namespace {

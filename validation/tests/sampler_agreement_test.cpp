@@ -14,10 +14,10 @@
 
 #include <filesystem>
 
-#include "scene/scene_at_width.h"
+#include "loader/scene_at_width.h"
 #include "tile_batches.h"
-#include "validation/comparison_family.h"
-#include "validation/suite_samplers.h"
+#include "validation/compare/comparison_family.h"
+#include "validation/compare/suite_samplers.h"
 
 namespace verity::validation {
 namespace sampler_agreement_test {

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "validation/batch_regions.h"
+#include "validation/compare/batch_regions.h"
 #include "validation/studies/timed_render.h"
 
 namespace verity::validation::testing {

@@ -29,9 +29,9 @@
 
 #include "core/error.h"
 #include "film/image_io.h"
+#include "loader/scene_at_width.h"
 #include "render/renderer.h"
 #include "sampling/sampler.h"
-#include "scene/scene_at_width.h"
 
 namespace verity {
 namespace {

@@ -11,8 +11,8 @@
 
 #include "integrators/integrator_registry.h"
 #include "integrators/integrator_settings.h"
+#include "loader/scene_loader.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
 
 namespace verity {
 namespace {

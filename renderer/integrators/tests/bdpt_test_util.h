@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "integrators/integrator_settings.h"
+#include "loader/scene_loader.h"
 #include "render/component_images.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
 
 namespace verity::bdpt_test {
 

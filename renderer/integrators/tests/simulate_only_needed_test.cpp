@@ -1,8 +1,8 @@
 // "Simulate only what the scene calls for": a scene that cannot carry light costs no ray.
 #include <gtest/gtest.h>
 
+#include "loader/scene_loader.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
 
 namespace verity {
 namespace {

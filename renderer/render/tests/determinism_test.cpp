@@ -6,16 +6,16 @@
 #include <filesystem>
 
 #include "film/image_io.h"
+#include "loader/scene_at_width.h"
+#include "loader/scene_loader.h"
 #include "render/renderer.h"
 #include "sampling/sampler.h"
-#include "scene/scene_at_width.h"
-#include "scene/scene_loader.h"
 
 namespace verity {
 namespace {
 
 // A lit sphere on a checkered floor, rendered with the scene-format sampler object `sampler`.
-std::string sceneWith(const std::string& sampler) {
+std::string sceneWithSampler(const std::string& sampler) {
   return R"({
   "camera": {"transform": {"from": [0, 1, 6], "at": [0, 0, 0], "up": [0, 1, 0]}, "vfov": 50,
              "resolution": [40, 36]},
@@ -49,7 +49,7 @@ std::vector<float> renderWithThreads(SceneFile& file, int threads) {
 }
 
 std::vector<float> renderWithThreads(const std::string& sampler, int threads) {
-  SceneFile file = loadSceneText(sceneWith(sampler), "/tmp/determinism.json");
+  SceneFile file = loadSceneText(sceneWithSampler(sampler), "/tmp/determinism.json");
   return renderWithThreads(file, threads);
 }
 

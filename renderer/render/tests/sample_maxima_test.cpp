@@ -5,8 +5,8 @@
 
 #include <filesystem>
 
+#include "loader/scene_at_width.h"
 #include "render/renderer.h"
-#include "scene/scene_at_width.h"
 
 namespace verity {
 namespace {

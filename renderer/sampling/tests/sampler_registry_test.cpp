@@ -8,9 +8,9 @@
 #include <set>
 #include <typeinfo>
 
+#include "params/json_node.h"
 #include "sampling/independent_sampler.h"
 #include "sampling/sampler.h"
-#include "scene/json_node.h"
 #include "testing/error_of.h"
 
 namespace verity {

@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "loader/scene_loader.h"
 #include "scene/scene.h"
-#include "scene/scene_loader.h"
 
 namespace verity {
 namespace {

@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "loader/scene_loader.h"
 #include "sampling/independent_sampler.h"
 #include "sampling/warp.h"
-#include "scene/scene_loader.h"
 
 namespace verity {
 namespace {

@@ -14,8 +14,8 @@
 #include <pcg_random.hpp>
 #include <random>
 
+#include "loader/scene_loader.h"
 #include "sampling/warp.h"
-#include "scene/scene_loader.h"
 
 namespace verity {
 namespace {

@@ -1,8 +1,8 @@
 // The moved scene is the scene moved: bounds, camera and solid textures follow the motion.
 #include <gtest/gtest.h>
 
+#include "loader/scene_loader.h"
 #include "materials/material.h"
-#include "scene/scene_loader.h"
 #include "validation/invariance/rigid_motion.h"
 
 namespace verity::validation {

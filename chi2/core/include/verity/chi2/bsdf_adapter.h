@@ -1,0 +1,100 @@
+// Checking a BSDF written in another renderer's own types. The caller gives three callables
+// in its own vector type V (any 3-vector vector_access.h reads) and value type (a scalar or
+// three components):
+//
+//   sample(const V& wi, const BsdfUniforms& u) -> std::optional<S>, S having members
+//       wo (V), weight (value), pdf (a number) and optionally delta (bool), e.g.
+//       SampledDirection<V, Value>; nothing when the BSDF cannot scatter from wi;
+//   eval(const V& wi, const V& wo) -> value          f without the cosine
+//   pdf(const V& wi, const V& wo)  -> a number       per unit solid angle
+//
+// with the conventions of bsdf_model.h (normal +z, both directions pointing away, weight =
+// f·|cos θo|/pdf, wo.z < 0 for transmission). checkBsdf then runs every check the suite
+// runs on Verity's materials, for one incident direction:
+//   chi-square       the histogram of sampled directions against ∫pdf over each cell
+//   pdf integral     ∫pdf over the sphere against the fraction of valid samples
+//   per sample       weight = eval·|cos θo|/pdf, sample pdf = pdf(), unit finite wo,
+//                    no NaN, Inf or negative value, reciprocity (with the indices)
+// Each is a statistical test at `significance`, chosen by the caller; see check_result.h.
+//
+//   auto model = verity::chi2::bsdfModel<Vec3>(sample, eval, pdf);
+//   CheckResult r = checkBsdf(model, Vec3{0.5, 0, 0.866}, options);
+//   if (!r.passed()) std::cout << r.report();
+#pragma once
+
+#include <verity/chi2/bsdf_model.h>
+#include <verity/chi2/check_result.h>
+
+#include <optional>
+#include <string>
+#include <type_traits>
+
+namespace verity::chi2 {
+
+// A sample in the caller's own types, for callables that have no such struct of their own.
+template <class V, class Value>
+struct SampledDirection {
+  V wo{};
+  Value weight{};
+  double pdf = 0;
+  bool delta = false;
+};
+
+namespace detail {
+
+template <class T, class = void>
+struct HasDelta : std::false_type {};
+template <class T>
+struct HasDelta<T, std::void_t<decltype(bool(std::declval<const T&>().delta))>> : std::true_type {};
+
+template <class T>
+struct IsOptional : std::false_type {};
+template <class T>
+struct IsOptional<std::optional<T>> : std::true_type {};
+
+}  // namespace detail
+
+// The model of callables in the caller's vector type V.
+template <class V, class SampleFn, class EvalFn, class PdfFn>
+BsdfModel bsdfModel(SampleFn sample, EvalFn eval, PdfFn pdf) {
+  using Value = std::decay_t<decltype(eval(std::declval<const V&>(), std::declval<const V&>()))>;
+  using Result = std::decay_t<decltype(sample(std::declval<const V&>(), BsdfUniforms{}))>;
+  static_assert(detail::IsOptional<Result>::value,
+                "sample(wi, u) must return a std::optional: nothing when it fails");
+  BsdfModel m;
+  m.components = ValueAccess<Value>::kComponents;
+  m.sample = [sample](const Eigen::Vector3d& wi,
+                      const BsdfUniforms& u) -> std::optional<DirectionSample> {
+    const Result s = sample(makeVector3<V>(wi), u);
+    if (!s) return std::nullopt;
+    using Weight = std::decay_t<decltype(s->weight)>;
+    DirectionSample d;
+    d.wo = readVector3(s->wo);
+    d.weight = ValueAccess<Weight>::read(s->weight);
+    d.pdf = static_cast<double>(s->pdf);
+    if constexpr (detail::HasDelta<typename Result::value_type>::value) d.delta = bool(s->delta);
+    return d;
+  };
+  m.eval = [eval](const Eigen::Vector3d& wi, const Eigen::Vector3d& wo) {
+    return ValueAccess<Value>::read(eval(makeVector3<V>(wi), makeVector3<V>(wo)));
+  };
+  m.pdf = [pdf](const Eigen::Vector3d& wi, const Eigen::Vector3d& wo) {
+    return static_cast<double>(pdf(makeVector3<V>(wi), makeVector3<V>(wo)));
+  };
+  return m;
+}
+
+struct BsdfCheckOptions : CheckOptions {
+  bool checkReciprocity = true;
+};
+
+// One incident direction wi (local frame, normalised here).
+CheckResult checkBsdf(const BsdfModel& model, const Eigen::Vector3d& wi,
+                      const BsdfCheckOptions& options);
+
+template <class V, class = std::enable_if_t<!std::is_same_v<V, Eigen::Vector3d>>>
+CheckResult checkBsdf(const BsdfModel& model, const V& wi, const BsdfCheckOptions& options) {
+  return checkBsdf(model, readVector3(wi), options);
+}
+
+}  // namespace verity::chi2

@@ -1,0 +1,57 @@
+// A BSDF as the checks see it: three functions in double precision in the local shading
+// frame. bsdf_adapter.h builds one from callables in the caller's own types; Verity's
+// materials are adapted in chi2/bsdf_subject.h.
+//
+// Conventions (those of pbrt, Mitsuba and Verity):
+// - The shading normal is +z. wi and wo are unit vectors and both point away from the
+//   surface: wi towards where the path came from, wo towards where it goes next. A
+//   transmitted wo has wo.z < 0 (for wi.z > 0).
+// - eval(wi, wo) is the BSDF f without the cosine factor; pdf(wi, wo) is the density of
+//   sample() producing wo per unit solid angle. Both cover the non-delta part only.
+// - A sample's weight is f(wi, wo)·|cos θo| / pdf, with cos θo = wo.z.
+// - A delta lobe (a mirror, a smooth dielectric) is sampled with `delta` set: such samples are
+//   counted and left out of the histogram, so ∫pdf must equal the probability of a valid
+//   non-delta sample. A sample() that fails (below the horizon, total internal reflection)
+//   returns nothing; it weighs zero and likewise lowers the expected ∫pdf.
+// - Values are RGB: a scalar BSDF repeats its one value (components = 1, printed as one).
+// - Reciprocity (Veach 1997, §5.3.2): eval(wi, wo)·η(wo)² = eval(wo, wi)·η(wi)², η(w) being
+//   the index of refraction on w's side (exteriorIndex above the surface, interiorIndex
+//   below), i.e. radiance is scaled by 1/η² across a refraction as in pbrt. Where given,
+//   evalAdjoint (the BSDF for importance transport) must equal eval(wo, wi).
+#pragma once
+
+#include <verity/chi2/uniforms.h>
+
+#include <Eigen/Core>
+#include <functional>
+#include <optional>
+
+namespace verity::chi2 {
+
+struct DirectionSample {
+  Eigen::Vector3d wo = Eigen::Vector3d::UnitZ();
+  Eigen::Array3d weight = Eigen::Array3d::Zero();
+  double pdf = 0;
+  bool delta = false;
+};
+
+struct BsdfModel {
+  using SampleFn =
+      std::function<std::optional<DirectionSample>(const Eigen::Vector3d& wi, const BsdfUniforms&)>;
+  using EvalFn =
+      std::function<Eigen::Array3d(const Eigen::Vector3d& wi, const Eigen::Vector3d& wo)>;
+  using PdfFn = std::function<double(const Eigen::Vector3d& wi, const Eigen::Vector3d& wo)>;
+
+  SampleFn sample;
+  EvalFn eval;
+  PdfFn pdf;
+  EvalFn evalAdjoint;  // optional
+  int components = 3;  // 1 for a scalar BSDF
+  double exteriorIndex = 1, interiorIndex = 1;
+
+  // The relative index across the surface; transmission peaks and cut-offs are sought only
+  // where it is not 1.
+  double relativeIndex() const { return interiorIndex / exteriorIndex; }
+};
+
+}  // namespace verity::chi2

@@ -1,0 +1,53 @@
+// What an adapter's check returns: the sampling test with its two statistical verdicts
+// (chi-square on the shape, pdf integral on the normalisation) and the per-sample audit,
+// plus a list of what failed, by name, to print or assert on.
+#pragma once
+
+#include <verity/chi2/sampling_check.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace verity::chi2 {
+
+// Each check runs two statistical tests (chi-square and pdf integral): a caller that runs
+// n checks at a family-wise level α uses sidakLevel(α, kStatisticalTestsPerCheck · n).
+inline constexpr int kStatisticalTestsPerCheck = 2;
+
+// What every adapter's check is told.
+struct CheckOptions {
+  std::string name;  // printed, and the seed's source (seedFromName) unless `seed` is set
+  // The per-test level in (0, 1), required: e.g. sidakLevel(0.01, kStatisticalTestsPerCheck · n)
+  // for n checks at a family-wise level of 1%.
+  double significance = 0;
+  long long samples = 1'000'000;
+  std::optional<uint64_t> seed;
+  // Cells in cos θ on the sphere (twice as many in φ) or along each side of a planar
+  // domain; 0: 32 on the sphere and 40 on a plane, as in Verity's suite.
+  int resolution = 0;
+};
+
+struct CheckResult {
+  TestResult test;
+  long long deltaSamples = 0;  // delta-lobe samples, counted and not histogrammed
+
+  // PASSED, FAILED, or INCONCLUSIVE when a check could not run with its stated power
+  // (test.inconclusiveReason() says why); passed() only on PASSED.
+  Verdict verdict() const { return test.verdict(); }
+  bool passed() const { return test.passed(); }
+  // "chi-square", "pdf integral", "samples outside the domain", "inconclusive" and the
+  // audit's defects ("weight != eval*cos/pdf", "reciprocity", ...: defectName()); empty
+  // when it passed.
+  std::vector<std::string> failures() const;
+  bool failed(const std::string& check) const;
+  std::string report() const;
+};
+
+// Runs one sampling test of `subject` as `options` say, seeded from `seedName` unless
+// options.seed is set.
+CheckResult runCheck(const Subject& subject, const CheckOptions& options,
+                     const std::string& seedName);
+
+}  // namespace verity::chi2

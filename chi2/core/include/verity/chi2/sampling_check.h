@@ -1,0 +1,74 @@
+// One sampling test: draw N samples, histogram them, integrate the claimed density over
+// every cell, and run the checks — chi-square goodness of fit (the shape), the pdf
+// integral against the valid fraction (the normalisation), and the per-sample audit.
+#pragma once
+
+#include <verity/chi2/audit.h>
+#include <verity/chi2/chi_square.h>
+#include <verity/chi2/integral_check.h>
+#include <verity/chi2/quadrature.h>
+#include <verity/chi2/subject.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace verity::chi2 {
+
+struct TestOptions {
+  long long samples = 1'000'000;
+  uint64_t seed = 1;
+  // The per-test level, in (0, 1): the caller corrects for its own number of tests (e.g.
+  // sidakLevel() in significance.h). runSamplingTest refuses any other value.
+  double significance = 0;
+  QuadratureOptions quadrature;
+  double integralTolerance = kIntegralTolerance;
+};
+
+// What a sampling test concluded. PASSED only when every check ran with the power it
+// states; INCONCLUSIVE when a check could not run that way (its reason is named), so that a
+// test never passes having checked nothing and never fails because of its own arithmetic.
+enum class Verdict { Passed, Failed, Inconclusive };
+
+std::string verdictName(Verdict verdict);  // "PASSED", "FAILED", "INCONCLUSIVE"
+
+struct TestResult {
+  std::string subject;
+  Domain domain;
+  double significance = 0;
+  long long samples = 0, valid = 0;
+  long long outside = 0;            // valid samples outside the domain's support: outright failures
+  std::vector<double> probability;  // ∫ pdf over each cell
+  std::vector<double> expected;     // expected counts given the number of valid samples
+  std::vector<long long> observed;
+  double quadratureError = 0;  // summed Gauss–Kronrod error estimates
+  ChiSquareResult chiSquare;
+  IntegralCheck integral;
+  Audit audit;
+  double seconds = 0;
+
+  double integralTolerance = 0;  // the stated quadrature tolerance on ∫pdf
+
+  bool chiSquarePassed() const { return outside == 0 && chiSquare.passed(significance); }
+  // The cell probabilities are as accurate as the integral check states: the summed error
+  // estimate lies within its tolerance. Otherwise the expected counts, the pdf integral and
+  // every verdict drawn from them are the quadrature's, not the sampler's.
+  bool quadratureHolds() const { return quadratureError <= integralTolerance; }
+  // FAILED on a defect that needs no quadrature (a per-sample defect, a sample outside the
+  // support); else INCONCLUSIVE when the quadrature does not hold; else FAILED on the
+  // chi-square or pdf-integral test; else INCONCLUSIVE when no valid sample was drawn or
+  // too few cells expect enough samples for the chi-square test; else PASSED.
+  Verdict verdict() const;
+  // Why the verdict is INCONCLUSIVE; empty otherwise.
+  std::string inconclusiveReason() const;
+  bool passed() const { return verdict() == Verdict::Passed; }
+  std::string report() const;
+};
+
+TestResult runSamplingTest(const Subject& subject, const TestOptions& options);
+
+// A fixed seed derived from a configuration's name (FNV-1a), so that every configuration
+// has its own reproducible stream and no seed is ever picked by hand.
+uint64_t seedFromName(const std::string& name);
+
+}  // namespace verity::chi2

@@ -1,0 +1,46 @@
+// What a sampling test examines: a sampler and the density it claims, on a domain. Warps,
+// BSDFs and (later) light samplers are adapted to this one interface.
+#pragma once
+
+#include <verity/chi2/audit.h>
+#include <verity/chi2/domain.h>
+
+#include <optional>
+#include <pcg_random.hpp>
+#include <string>
+#include <vector>
+
+namespace verity::chi2 {
+
+class Subject {
+ public:
+  virtual ~Subject() = default;
+  virtual const Domain& domain() const = 0;
+  // Density per dx dy of the domain at (x, y); thread-safe. Non-finite or negative values
+  // are recorded by the caller.
+  virtual double pdf(double x, double y) const = 0;
+  // One sample in domain coordinates, or nothing when the sampler declines (an invalid
+  // sample). Per-sample defects go to `audit`; thread-safe with one rng/audit per thread.
+  virtual std::optional<Point2d> sample(pcg32& rng, Audit& audit) const = 0;
+  // Where the density may jump inside the domain along y at abscissa x (e.g. a shading
+  // horizon that crosses cells): the inner quadrature splits there instead of refining a
+  // discontinuity to its maximum depth.
+  virtual std::vector<double> breakpointsY(double x) const { return {}; }
+  // Abscissae where the density jumps or kinks for every y (an edge along a meridian): the
+  // outer quadrature splits there.
+  virtual std::vector<double> breakpointsX() const { return {}; }
+  // Points where the density may gather into a lobe far narrower than a cell (a mirror or
+  // a refraction direction at tiny roughness or an index near 1): the quadrature grades its
+  // cuts towards them instead of hoping that bisection finds them.
+  virtual std::vector<Point2d> peaks() const { return {}; }
+  // Deterministic checks independent of sampling (e.g. eval at cell centres).
+  virtual void extraChecks(Audit& audit) const {}
+  virtual std::string describe() const = 0;
+};
+
+// A uniform float in [0, 1) from the generator (24 random bits).
+inline float uniform01(pcg32& rng) {
+  return static_cast<float>(rng() >> 8) * 0x1p-24f;
+}
+
+}  // namespace verity::chi2

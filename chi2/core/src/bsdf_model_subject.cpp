@@ -1,0 +1,173 @@
+#include <fmt/format.h>
+#include <verity/chi2/bsdf_model_subject.h>
+
+#include <cmath>
+
+namespace verity::chi2 {
+
+namespace {
+
+std::string str(const Vector3d& v) {
+  return fmt::format("({:.7g}, {:.7g}, {:.7g})", v.x(), v.y(), v.z());
+}
+
+bool validValue(const Eigen::Array3d& v) {
+  return v.allFinite() && (v >= 0).all();
+}
+
+}  // namespace
+
+BsdfModelSubject::BsdfModelSubject(BsdfModel model, BsdfTestSetup setup)
+    : model_(std::move(model)),
+      setup_(std::move(setup)),
+      domain_(sphereDomain(setup_.resolution)) {}
+
+std::string BsdfModelSubject::format(const Eigen::Array3d& v) const {
+  if (model_.components == 1) return fmt::format("{:.7g}", v[0]);
+  return fmt::format("({:.7g}, {:.7g}, {:.7g})", v[0], v[1], v[2]);
+}
+
+double BsdfModelSubject::pdf(double phi, double z) const {
+  return model_.pdf(setup_.wi, setup_.frame.toLocal(sphereDirectionAtLastAzimuth(phi, z)));
+}
+
+std::optional<Point2d> BsdfModelSubject::sample(pcg32& rng, Audit& audit) const {
+  const Vector3d& wi = setup_.wi;
+  BsdfUniforms u;
+  u.lobe = uniform01(rng);
+  u.xy.x = uniform01(rng);
+  u.xy.y = uniform01(rng);
+  const std::optional<DirectionSample> s = model_.sample(wi, u);
+  if (!s) return std::nullopt;
+  if (s->delta) {
+    ++delta_;
+    return std::nullopt;
+  }
+  // Where a defect was found; formatted only when one is.
+  auto at = [&] {
+    return fmt::format("wi={} u=({}, {}, {}) wo={}", str(wi), u.lobe, u.xy.x, u.xy.y, str(s->wo));
+  };
+  if (!s->wo.allFinite()) {
+    audit.record(Defect::NonFinite, "sampled direction " + at());
+    return std::nullopt;
+  }
+  if (std::fabs(s->wo.norm() - 1) > 1e-3) {
+    audit.record(Defect::NotUnit, "sampled direction not a unit vector: " + at());
+    return std::nullopt;
+  }
+  const Vector3d& wo = s->wo;
+  if (!s->weight.allFinite() || !std::isfinite(s->pdf))
+    audit.record(Defect::NonFinite,
+                 fmt::format("weight {} pdf {} at {}", format(s->weight), s->pdf, at()));
+  else if (!(s->weight >= 0).all() || s->pdf <= 0)
+    audit.record(Defect::Negative,
+                 fmt::format("weight {} pdf {} (a returned sample needs pdf > 0) at {}",
+                             format(s->weight), s->pdf, at()));
+
+  const Eigen::Array3d f = model_.eval(wi, wo);
+  const double p = model_.pdf(wi, wo);
+  if (!f.allFinite() || !std::isfinite(p))
+    audit.record(Defect::NonFinite, fmt::format("eval {} pdf() {} at {}", format(f), p, at()));
+  else if (!(f >= 0).all() || p < 0)
+    audit.record(Defect::Negative, fmt::format("eval {} pdf() {} at {}", format(f), p, at()));
+  else {
+    if (!relativelyClose(s->pdf, p, kWeightTolerance))
+      audit.record(Defect::SamplePdf, fmt::format("sample pdf {} vs pdf() {} (ratio {:.6f}) at {}",
+                                                  s->pdf, p, s->pdf / p, at()));
+    const Eigen::Array3d expected =
+        p > 0 ? Eigen::Array3d(f * std::fabs(wo.z()) / p) : Eigen::Array3d::Zero();
+    for (int c = 0; c < 3; ++c) {
+      if (!relativelyClose(s->weight[c], expected[c], kWeightTolerance)) {
+        audit.record(
+            Defect::Weight,
+            fmt::format("weight {} vs eval*|cos|/pdf {} (ratio {:.6f}) at {}", format(s->weight),
+                        format(expected), s->weight[c] / expected[c], at()));
+        break;
+      }
+    }
+  }
+  if (setup_.checkReciprocity) checkReciprocity(wo, f, audit);
+  return sphereCoords(setup_.frame.toWorld(wo));
+}
+
+void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::Array3d& f,
+                                        Audit& audit) const {
+  const Vector3d& wi = setup_.wi;
+  const Eigen::Array3d fr = model_.eval(wo, wi);
+  const Eigen::Array3d fi = model_.evalAdjoint ? model_.evalAdjoint(wi, wo) : fr;
+  const double etaI = indexOn(wi), etaO = indexOn(wo);
+  for (int c = 0; c < 3; ++c) {
+    const double a = f[c] * etaO * etaO, b = fr[c] * etaI * etaI;
+    if (!relativelyClose(a, b, kReciprocityTolerance)) {
+      audit.record(Defect::Reciprocity,
+                   fmt::format("eval(wi,wo)*eta_o^2 = {:.7g} vs eval(wo,wi)*eta_i^2 = {:.7g} "
+                               "(ratio {:.6f}) wi={} wo={}",
+                               a, b, a / b, str(wi), str(wo)));
+      return;
+    }
+    if (!relativelyClose(fi[c], fr[c], kReciprocityTolerance)) {
+      audit.record(Defect::Reciprocity,
+                   fmt::format("importance eval(wi,wo) = {:.7g} vs radiance eval(wo,wi) = {:.7g} "
+                               "(ratio {:.6f}) wi={} wo={}",
+                               fi[c], fr[c], fi[c] / fr[c], str(wi), str(wo)));
+      return;
+    }
+  }
+}
+
+std::vector<double> BsdfModelSubject::breakpointsY(double phi) const {
+  // The shading horizon n·ω = 0.
+  const Vector3d& n = setup_.frame.n;
+  std::vector<double> z = coneCrossings(n, 0, phi);
+  if (model_.relativeIndex() != 1) {
+    // Transmission ends where the generalised half vector −(ηi ωi + ηo ωo) turns
+    // perpendicular to n (Walter et al. 2007, eq. 16), i.e. on the cone
+    // n·ωo = −ηi (n·ωi) / ηo; a distribution with D > 0 at the horizon (GGX at large
+    // alpha) jumps there.
+    const double cosI = setup_.wi.z();
+    const double etaI = indexOn(setup_.wi);
+    const double etaO = cosI > 0 ? model_.interiorIndex : model_.exteriorIndex;
+    for (double c : coneCrossings(n, -etaI * cosI / etaO, phi)) z.push_back(c);
+  }
+  return z;
+}
+
+std::vector<Point2d> BsdfModelSubject::peaks() const {
+  const Vector3d& wi = setup_.wi;
+  std::vector<Point2d> out{sphereCoords(setup_.frame.toWorld(Vector3d(-wi.x(), -wi.y(), wi.z())))};
+  if (model_.relativeIndex() != 1) {
+    // Snell's law about the shading normal, from wi's side.
+    const double eta = wi.z() > 0 ? model_.relativeIndex() : 1 / model_.relativeIndex();
+    const double cosI = std::fabs(wi.z()), sin2T = (1 - cosI * cosI) / (eta * eta);
+    if (sin2T < 1) {
+      const double cosT = std::sqrt(1 - sin2T);
+      Vector3d t = -wi / eta;
+      t.z() = wi.z() > 0 ? -cosT : cosT;
+      out.push_back(sphereCoords(setup_.frame.toWorld(t.normalized())));
+    }
+  }
+  return out;
+}
+
+void BsdfModelSubject::extraChecks(Audit& audit) const {
+  // eval at every cell centre: finite and non-negative everywhere, not only where sampled.
+  for (int c = 0; c < domain_.cells(); ++c) {
+    const double phi = (c % domain_.nx + 0.5) * domain_.cellWidth();
+    const double z = -1 + (c / domain_.nx + 0.5) * domain_.cellHeight();
+    const Vector3d wo = setup_.frame.toLocal(sphereDirection(phi, z));
+    for (const BsdfModel::EvalFn* eval : {&model_.eval, &model_.evalAdjoint}) {
+      if (!*eval) continue;
+      const Eigen::Array3d f = (*eval)(setup_.wi, wo);
+      if (!validValue(f))
+        audit.record(f.allFinite() ? Defect::Negative : Defect::NonFinite,
+                     fmt::format("eval {} at wi={} wo={}", format(f), str(setup_.wi), str(wo)));
+    }
+  }
+}
+
+std::string BsdfModelSubject::describe() const {
+  return fmt::format("{}\n  shading normal {}, local wi {}", setup_.name, str(setup_.frame.n),
+                     str(setup_.wi));
+}
+
+}  // namespace verity::chi2

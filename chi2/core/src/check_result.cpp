@@ -1,0 +1,49 @@
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <verity/chi2/check_result.h>
+
+#include <algorithm>
+
+namespace verity::chi2 {
+
+CheckResult runCheck(const Subject& subject, const CheckOptions& options,
+                     const std::string& seedName) {
+  TestOptions o;
+  o.samples = options.samples;
+  o.significance = options.significance;
+  o.seed = options.seed ? *options.seed : seedFromName(seedName);
+  CheckResult r;
+  r.test = runSamplingTest(subject, o);
+  return r;
+}
+
+std::vector<std::string> CheckResult::failures() const {
+  std::vector<std::string> out;
+  if (test.outside > 0) out.push_back("samples outside the domain");
+  // An inconclusive test's statistics are the quadrature's, not the sampler's.
+  if (test.verdict() == Verdict::Inconclusive) {
+    out.push_back("inconclusive");
+  } else {
+    if (!test.chiSquare.passed(test.significance)) out.push_back("chi-square");
+    if (!test.integral.passed) out.push_back("pdf integral");
+  }
+  for (int d = 0; d < static_cast<int>(Defect::Count); ++d)
+    if (test.audit.count(static_cast<Defect>(d)) > 0)
+      out.push_back(defectName(static_cast<Defect>(d)));
+  return out;
+}
+
+bool CheckResult::failed(const std::string& check) const {
+  const std::vector<std::string> f = failures();
+  return std::find(f.begin(), f.end(), check) != f.end();
+}
+
+std::string CheckResult::report() const {
+  std::string s = test.report();
+  if (deltaSamples > 0)
+    s += fmt::format("\n  {} delta-lobe samples (not histogrammed)", deltaSamples);
+  if (!passed()) s += fmt::format("\n  failed: {}", fmt::join(failures(), ", "));
+  return s;
+}
+
+}  // namespace verity::chi2

@@ -1,0 +1,86 @@
+#include <fmt/format.h>
+#include <verity/chi2/chi_square.h>
+
+#include <algorithm>
+#include <boost/math/distributions/chi_squared.hpp>
+#include <limits>
+
+namespace verity::chi2 {
+
+double outrightThreshold(double significance, int cells) {
+  return 1e-3 * significance / cells;
+}
+
+ChiSquareResult chiSquareTest(const std::vector<double>& expected,
+                              const std::vector<long long>& observed, double threshold) {
+  ChiSquareResult r;
+  r.outrightThreshold = threshold;
+  const size_t n = expected.size();
+  double poolE = 0;
+  double poolO = 0;
+  std::vector<std::pair<double, double>> regular;  // (expected, observed)
+  for (size_t c = 0; c < n; ++c) {
+    if (expected[c] < threshold && observed[c] > 0) {
+      r.outrightSamples += observed[c];
+      if (r.outrightCell < 0) {
+        r.outrightCell = static_cast<int>(c);
+        r.outrightExpected = expected[c];
+      }
+    }
+    if (expected[c] < 5) {
+      poolE += expected[c];
+      poolO += static_cast<double>(observed[c]);
+      ++r.pooledCells;
+    } else {
+      regular.emplace_back(expected[c], static_cast<double>(observed[c]));
+    }
+  }
+  r.pooledExpected = poolE;
+  if (poolE > 0 || poolO > 0) {
+    if (poolE >= 5 || regular.empty()) {
+      regular.emplace_back(poolE, poolO);
+    } else {
+      auto smallest = std::min_element(regular.begin(), regular.end());
+      smallest->first += poolE;
+      smallest->second += poolO;
+    }
+  }
+  r.regularCells = static_cast<int>(regular.size());
+  if (regular.size() < 2) {
+    r.degenerate = true;
+    return r;
+  }
+  for (const auto& [e, o] : regular) {
+    if (e <= 0) {  // a pool with no expectation but samples in it
+      r.statistic = std::numeric_limits<double>::infinity();
+      break;
+    }
+    r.statistic += (o - e) * (o - e) / e;
+  }
+  r.dof = static_cast<int>(regular.size()) - 1;
+  if (!std::isfinite(r.statistic)) {
+    r.pValue = 0;
+  } else {
+    boost::math::chi_squared_distribution<double> dist(r.dof);
+    r.pValue = boost::math::cdf(boost::math::complement(dist, r.statistic));
+  }
+  return r;
+}
+
+std::string ChiSquareResult::describe() const {
+  std::string s;
+  if (degenerate) {
+    s = fmt::format("chi-square: degenerate ({} cell(s) after pooling), no test", regularCells);
+  } else {
+    s = fmt::format(
+        "chi-square: statistic {:.4g}, dof {}, p-value {:.4g} ({} cells, {} pooled "
+        "with expected {:.3g})",
+        statistic, dof, pValue, regularCells, pooledCells, pooledExpected);
+  }
+  if (outrightSamples > 0)
+    s += fmt::format("; {} sample(s) where the density is zero (cell {} expects {:.3g} < {:.3g})",
+                     outrightSamples, outrightCell, outrightExpected, outrightThreshold);
+  return s;
+}
+
+}  // namespace verity::chi2

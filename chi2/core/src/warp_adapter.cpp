@@ -1,0 +1,14 @@
+#include <verity/chi2/warp_adapter.h>
+#include <verity/chi2/warp_subject.h>
+
+namespace verity::chi2 {
+
+CheckResult checkWarp(const WarpModel& model, const WarpCheckOptions& options) {
+  const int resolution = options.resolution > 0        ? options.resolution
+                         : isDirectional(model.domain) ? 32
+                                                       : 40;
+  const std::string name = options.name.empty() ? "warp" : options.name;
+  return runCheck(WarpSubject(name, model, resolution), options, name);
+}
+
+}  // namespace verity::chi2

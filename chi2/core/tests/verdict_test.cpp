@@ -1,0 +1,111 @@
+// The three verdicts of a sampling test, each reached by a made-up subject whose truth is
+// known: PASSED only when every check ran with its stated power, INCONCLUSIVE (with its
+// reason) when one could not, FAILED on a real mismatch.
+#include <gtest/gtest.h>
+#include <verity/chi2/sampling_check.h>
+#include <verity/chi2/significance.h>
+
+#include <cmath>
+#include <limits>
+
+namespace verity::chi2 {
+namespace {
+
+// Uniform samples on the unit square with a claimed density `scale` (1 is right), or no
+// sample at all when `declines`, or a density with a narrow spike the quadrature is not
+// told about (so its error estimate stays far above the tolerance).
+class SquareSubject : public Subject {
+ public:
+  enum class Kind { Uniform, Declines, HiddenSpike, NanSample };
+  SquareSubject(Kind kind, double scale = 1) : kind_(kind), scale_(scale) {}
+  const Domain& domain() const override { return domain_; }
+  double pdf(double x, double y) const override {
+    if (kind_ == Kind::HiddenSpike) {
+      // A 1/r singularity at (0.3, 0.3): integrable, but nothing the graded cuts know of.
+      const double r = std::hypot(x - 0.3, y - 0.3);
+      return scale_ * 0.1 / std::max(r, 1e-300);
+    }
+    return kind_ == Kind::Declines ? 0.0 : scale_;
+  }
+  std::optional<Point2d> sample(pcg32& rng, Audit& audit) const override {
+    if (kind_ == Kind::Declines) return std::nullopt;
+    const Point2d p(uniform01(rng), uniform01(rng));
+    if (kind_ == Kind::NanSample && p.x() < 1e-3) {
+      audit.record(Defect::NonFinite, "a made-up NaN");
+      return std::nullopt;
+    }
+    return p;
+  }
+  std::string describe() const override { return "made-up square subject"; }
+
+ private:
+  Domain domain_ = squareDomain(8);
+  Kind kind_;
+  double scale_;
+};
+
+TestResult run(const Subject& subject, long long samples = 100'000) {
+  TestOptions o;
+  o.samples = samples;
+  o.seed = seedFromName("verdict " + subject.describe());
+  o.significance = sidakLevel(0.01, 1);
+  return runSamplingTest(subject, o);
+}
+
+TEST(FrameworkVerdict, RightUniformSamplerPasses) {
+  const TestResult r = run(SquareSubject(SquareSubject::Kind::Uniform));
+  EXPECT_EQ(r.verdict(), Verdict::Passed) << r.report();
+  EXPECT_EQ(r.inconclusiveReason(), "");
+}
+
+TEST(FrameworkVerdict, WrongNormalisationFails) {
+  const TestResult r = run(SquareSubject(SquareSubject::Kind::Uniform, 1.01));
+  EXPECT_EQ(r.verdict(), Verdict::Failed) << r.report();
+}
+
+TEST(FrameworkVerdict, NothingSampledIsInconclusiveNotPassed) {
+  const TestResult r = run(SquareSubject(SquareSubject::Kind::Declines));
+  EXPECT_EQ(r.valid, 0);
+  EXPECT_EQ(r.verdict(), Verdict::Inconclusive) << r.report();
+  EXPECT_NE(r.inconclusiveReason().find("no valid sample"), std::string::npos);
+  EXPECT_NE(r.report().find("INCONCLUSIVE"), std::string::npos);
+  EXPECT_EQ(r.report().find("PASSED"), std::string::npos);
+}
+
+TEST(FrameworkVerdict, TooFewSamplesForTwoCellsIsInconclusive) {
+  // 64 cells and 40 samples: no cell expects 5, so all pool into one.
+  const TestResult r = run(SquareSubject(SquareSubject::Kind::Uniform), 40);
+  EXPECT_TRUE(r.chiSquare.degenerate);
+  EXPECT_EQ(r.verdict(), Verdict::Inconclusive) << r.report();
+  EXPECT_NE(r.inconclusiveReason().find("chi-square test needs two"), std::string::npos);
+}
+
+TEST(FrameworkVerdict, QuadratureBeyondItsToleranceIsInconclusiveNotFailed) {
+  // The density is wrong (scale 3) but the quadrature cannot say by how much: no verdict on
+  // the counts may be drawn from it.
+  const TestResult r = run(SquareSubject(SquareSubject::Kind::HiddenSpike, 3));
+  ASSERT_GT(r.quadratureError, r.integralTolerance) << r.report();
+  EXPECT_EQ(r.verdict(), Verdict::Inconclusive) << r.report();
+  EXPECT_NE(r.inconclusiveReason().find("quadrature"), std::string::npos);
+}
+
+TEST(FrameworkVerdict, PerSampleDefectFailsWhateverTheQuadrature) {
+  const TestResult r = run(SquareSubject(SquareSubject::Kind::NanSample));
+  EXPECT_EQ(r.verdict(), Verdict::Failed) << r.report();
+  EXPECT_EQ(r.inconclusiveReason(), "");
+}
+
+TEST(FrameworkVerdict, SignificanceOutsideTheUnitIntervalIsRefused) {
+  TestOptions o;
+  o.samples = 10;
+  EXPECT_THROW(runSamplingTest(SquareSubject(SquareSubject::Kind::Uniform), o),
+               std::invalid_argument);
+  o.significance = 1;
+  EXPECT_THROW(runSamplingTest(SquareSubject(SquareSubject::Kind::Uniform), o),
+               std::invalid_argument);
+  EXPECT_THROW(sidakLevel(0.01, 0), std::invalid_argument);
+  EXPECT_THROW(sidakLevel(0, 10), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace verity::chi2

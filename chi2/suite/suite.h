@@ -1,0 +1,98 @@
+// The suite's configurations: every sampling test, with its parameters, its unique name
+// (the GoogleTest parameter name and the source of its seed) and whether it belongs to the
+// quick subset. The total number of statistical checks, which fixes the Šidák level, is
+// counted from these lists.
+#pragma once
+
+#include <verity/chi2/sampling_check.h>
+
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "chi2/suite/bsdf_subject.h"
+#include "chi2/suite/light_subjects.h"
+#include "chi2/suite/microfacet_checks.h"
+#include "chi2/suite/warp_subjects.h"
+
+namespace verity::chi2::suite {
+
+// Histogram resolution and sample count: 64 × 32 cells in (φ, cos θ) and 10⁶ samples for
+// directions (about 500 samples per cell where the density is uniform).
+inline constexpr int kSphereResolution = 32;
+inline constexpr int kPlanarResolution = 40;
+inline constexpr long long kSamples = 1'000'000;
+// BSDFs: 5·10⁵ samples (each also costs four eval() and one pdf() call for the per-sample
+// checks), which keeps the full sweep within its time budget on two cores.
+inline constexpr long long kBsdfSamples = 500'000;
+
+struct WarpCase {
+  std::string name;
+  WarpKind kind;
+  float parameter = 0;
+  bool quick = true;
+};
+
+struct MicrofacetCase {
+  std::string name;
+  MicrofacetType type;
+  float alpha;
+  MicrofacetSampling sampling;
+  double incidence;  // degrees
+  bool quick = false;
+  MicrofacetDistribution distribution() const { return {type, alpha, sampling}; }
+  Vector3f wi() const { return incidentDirection(incidence, false); }
+};
+
+struct BsdfCase {
+  std::string name;
+  std::string json;      // the material, as the scene format writes it
+  double incidence = 0;  // degrees from the geometric normal +z
+  bool inside = false;   // wi below the surface (rough dielectric)
+  bool rotated = false;  // shading normal normalize(0.25, 0.5, 1)
+  bool quick = false;
+};
+
+// An area light sampled from a reference point (see light_subjects.h).
+struct LightCase {
+  std::string name;
+  LightSetup setup;
+  bool quick = true;
+};
+
+// GoogleTest prints a case by its name.
+inline void PrintTo(const WarpCase& c, std::ostream* os) {
+  *os << c.name;
+}
+inline void PrintTo(const MicrofacetCase& c, std::ostream* os) {
+  *os << c.name;
+}
+inline void PrintTo(const LightCase& c, std::ostream* os) {
+  *os << c.name;
+}
+inline void PrintTo(const BsdfCase& c, std::ostream* os) {
+  *os << c.name << " " << c.json;
+}
+
+std::vector<WarpCase> warpCases();
+std::vector<MicrofacetCase> microfacetCases();
+std::vector<BsdfCase> bsdfCases();
+std::vector<LightCase> lightCases();
+// The reference (correct) samplers of the broken-sampler tests, which must pass.
+int controlCaseCount();
+
+// Two statistical checks (chi-square and pdf integral) per sampling test.
+int statisticalCheckCount();
+
+Vector3f rotatedNormal();
+std::shared_ptr<const Material> makeMaterial(const std::string& json);
+BsdfSetup setupFor(const BsdfCase& c);
+
+TestOptions optionsFor(const std::string& name);
+TestResult runWarp(const WarpCase& c);
+TestResult runMicrofacet(const MicrofacetCase& c);
+TestResult runBsdf(const BsdfCase& c);
+TestResult runLight(const LightCase& c);
+
+}  // namespace verity::chi2::suite

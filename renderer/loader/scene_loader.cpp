@@ -1,0 +1,177 @@
+#include "loader/scene_loader.h"
+
+#include "lights/background_registry.h"
+#include "loader/scene_keys.h"
+#include "materials/material_factory.h"
+#include "params/transform_parser.h"
+#include "sampling/sampler_registry.h"
+#include "shapes/shape_registry.h"
+
+namespace verity {
+
+namespace {
+
+// The most pixels an image may have (8192²): the film keeps several channels per pixel.
+constexpr int64_t kMaxPixels = int64_t{1} << 26;
+
+const std::string kExtentProblem =
+    "lies outside the supported extent: every coordinate must be within ±1e15";
+
+bool withinExtent(const Point3f& p) {
+  return p.cwiseAbs().maxCoeff() <= kMaxSceneCoordinate;  // false for NaN too
+}
+
+std::unique_ptr<Camera> parseCamera(const JsonNode& node) {
+  if (!node.isObject()) node.fail("expected a camera object");
+  node.declare({"the camera", {&cameraKeys()}});
+  const Transform toWorld = parseOptionalTransform(node);
+  if (!withinExtent(toWorld.point(Point3f::Zero()))) node[{"transform"}].fail(kExtentProblem);
+  // The camera maps its image plane through the transform: a shear or non-uniform scale
+  // would squash the image, as it would a sphere.
+  if (!toWorld.isSimilarity(nullptr))
+    node[{"transform"}].fail(
+        "a camera's transform must scale uniformly (no shear or non-uniform scale)");
+  Vector2i resolution(512, 512);
+  if (auto r = node.find({"resolution"})) {
+    resolution = r->asVector2i(1, 1 << 15);
+    if (int64_t{resolution.x()} * resolution.y() > kMaxPixels)
+      r->fail("the image must have at most 8192 × 8192 pixels in all");
+  }
+  const float vfov = node.getFloat({"vfov"}, 90, Range{0, 180, true, true});
+  const float fdist = node.getFloat({"fdist"}, 1, Range{0, kMaxSceneCoordinate, true, false});
+  const float aperture = node.getFloat({"aperture"}, 0, Range{0, kMaxSceneCoordinate});
+  node.rejectUnknownKeys();
+  return std::make_unique<Camera>(toWorld, resolution, vfov, fdist, aperture);
+}
+
+std::unique_ptr<EnvironmentLight> parseBackground(const JsonNode& node, TextureFactory& textures) {
+  if (node.isNumber() || node.isArray()) {
+    const Vector3f c = node.asVector3();
+    if ((c.array() < 0).any()) node.fail("background radiance must not be negative");
+    return std::make_unique<EnvironmentLight>(Color3(c.array()));
+  }
+  if (!node.isObject()) node.fail("expected a number, [r,g,b] or a background object");
+  const std::string type = node.type();
+  const BackgroundType* entry = findBackgroundType(type);
+  if (!entry)
+    node[{"type"}].fail("unknown background type \"" + type + "\" (expected " +
+                        backgroundTypeList() + ")");
+  node.declare({"background " + entry->name, {&backgroundCommonKeys(), &entry->keys}});
+  std::unique_ptr<EnvironmentLight> light = entry->build(node);
+  node.rejectUnknownKeys();
+  return light;
+}
+
+class SurfaceParser {
+ public:
+  SurfaceParser(Scene& scene, MaterialFactory& materials) : scene_(scene), materials_(materials) {}
+
+  void parse(const JsonNode& node, const Transform& parent) {
+    if (!node.isObject()) node.fail("expected a surface object");
+    const std::string type = node.type();
+    const Transform toWorld = parent * parseOptionalTransform(node);
+    if (type == "group") {
+      node.declare({"surface group", {&surfaceCommonKeys(), &groupKeys()}});
+      const JsonNode children = node[{"children"}];
+      if (!children.isArray()) children.fail("expected an array of surfaces");
+      for (size_t i = 0; i < children.size(); ++i) parse(children[i], toWorld);
+      node.rejectUnknownKeys();
+      return;
+    }
+    const ShapeType* entry = findShapeType(type);
+    if (!entry)
+      node[{"type"}].fail("unknown surface type \"" + type + "\" (expected " + shapeTypeList() +
+                          " or group)");
+    node.declare(
+        {"surface " + entry->name, {&surfaceCommonKeys(), &shapeCommonKeys(), &entry->keys}});
+    std::unique_ptr<Shape> shape = entry->build(node, toWorld);
+    const Bounds3f bounds = shape->bounds();
+    if (!withinExtent(bounds.lo) || !withinExtent(bounds.hi)) node.fail(kExtentProblem);
+    auto material = materials_.reference(node[{"material"}]);
+    node.rejectUnknownKeys();
+    scene_.addShape(std::move(shape), std::move(material));
+  }
+
+ private:
+  Scene& scene_;
+  MaterialFactory& materials_;
+};
+
+std::unique_ptr<Sampler> parseSampler(const JsonNode& root) {
+  auto node = root.find({"sampler"});
+  // An unknown type is left to makeSampler's error.
+  if (node && node->isObject()) {
+    const std::string type = node->has({"type"}) ? node->type() : samplerTypes().front().name;
+    if (const SamplerType* entry = findSamplerType(type))
+      node->declare({"sampler " + entry->name, {&samplerCommonKeys(), &entry->keys}});
+  }
+  auto sampler = makeSampler(node ? &*node : nullptr);
+  const int imageSamples = root.getInt({"image_samples"}, 1, 1, 1 << 24);
+  int spp = imageSamples;
+  if (node) {
+    if (auto samples = node->find({"samples"})) {
+      spp = samples->asInt(1, 1 << 24);
+      if (root.has({"image_samples"}) && spp != imageSamples)
+        samples->fail("disagrees with \"image_samples\"; give the sample count once");
+    }
+    node->rejectUnknownKeys();
+  }
+  sampler->setSamplesPerPixel(spp);
+  return sampler;
+}
+
+SceneFile build(const JsonNode& root, const std::filesystem::path& file) {
+  SceneFile result;
+  result.name = file.stem().string();
+  result.scene = std::make_unique<Scene>();
+  Scene& scene = *result.scene;
+  TextureFactory textures;
+  MaterialFactory materials(textures, result.warnings);
+  root.declare({"the scene file", {&sceneKeys()}});
+
+  scene.setCamera(parseCamera(root[{"camera"}]));
+  if (auto bg = root.find({"background"})) scene.setBackground(parseBackground(*bg, textures));
+  root.find({"accelerator"});  // DIRT's choice of accelerator: one serves all
+  auto integrator = root.find({"integrator"});
+  result.integrator = parseIntegratorSettings(integrator ? &*integrator : nullptr);
+  result.sampler = parseSampler(root);
+
+  if (auto list = root.find({"materials"})) {
+    if (!list->isArray()) list->fail("expected an array of materials");
+    std::set<std::string> names;
+    for (size_t i = 0; i < list->size(); ++i)
+      if (const JsonNode m = (*list)[i]; m.isObject())
+        if (const auto name = m.find({"name"}); name && name->isString())
+          names.insert(name->asString());
+    materials.setListedNames(std::move(names));
+    for (size_t i = 0; i < list->size(); ++i) {
+      const JsonNode m = (*list)[i];
+      const JsonNode name = m[{"name"}];
+      auto material = materials.make(m);
+      materials.addNamed(name, material);
+      scene.addMaterial(material);
+    }
+  }
+  if (auto list = root.find({"surfaces"})) {
+    if (!list->isArray()) list->fail("expected an array of surfaces");
+    SurfaceParser surfaces(scene, materials);
+    for (size_t i = 0; i < list->size(); ++i) surfaces.parse((*list)[i], Transform());
+  }
+  root.rejectUnknownKeys();
+  scene.finalize();
+  return result;
+}
+
+}  // namespace
+
+SceneFile loadScene(const std::filesystem::path& file) {
+  if (std::filesystem::is_directory(file))
+    throw VerityError(file.string(), "", "is a directory, not a scene file");
+  return build(JsonNode::load(file), file);
+}
+
+SceneFile loadSceneText(const std::string& text, const std::filesystem::path& file) {
+  return build(JsonNode::parse(text, file), file);
+}
+
+}  // namespace verity

@@ -1,0 +1,110 @@
+// A view of one JSON value that knows its file and JSON path, so that every error it
+// raises names both, and that remembers which keys were read so that unknown keys are
+// rejected instead of silently ignored. An object whose type declares its keys
+// (key_declaration.h) can be read only by the spellings declared.
+#pragma once
+
+#include <filesystem>
+#include <initializer_list>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "core/error.h"
+#include "core/math.h"
+#include "params/key_declaration.h"
+
+namespace verity {
+
+// Accepted spellings of one key; the first is the canonical one used in messages.
+using Keys = std::initializer_list<const char*>;
+
+struct Range {
+  float lo = -kInfinity, hi = kInfinity;
+  bool loOpen = false, hiOpen = false;
+
+  static Range any() { return {}; }
+  static Range positive() { return {0.0f, kInfinity, true, false}; }
+  static Range nonNegative() { return {0.0f, kInfinity, false, false}; }
+  static Range unit() { return {0.0f, 1.0f, false, false}; }
+  bool contains(float v) const;
+  std::string describe() const;  // "a number in (0, 100]"
+  std::string interval() const;  // "(0, 100]", "> 0", "finite": for key declarations
+};
+
+class JsonNode {
+ public:
+  // Parses a file; syntax errors name the line and column.
+  static JsonNode load(const std::filesystem::path& file);
+  // Parses text as if it were the file `file` (tests and inline scenes).
+  static JsonNode parse(const std::string& text, const std::filesystem::path& file);
+
+  const nlohmann::json& value() const { return *value_; }
+  const std::string& path() const { return path_; }
+  const std::filesystem::path& file() const { return source_->file; }
+  // The error fail() would throw, as a value: a loader warning naming this value.
+  VerityError warning(const std::string& problem) const;
+  // Resolves a file name relative to the scene file's folder.
+  std::filesystem::path resolve(const std::string& name) const;
+
+  bool isObject() const { return value_->is_object(); }
+  bool isArray() const { return value_->is_array(); }
+  bool isNumber() const { return value_->is_number(); }
+  bool isString() const { return value_->is_string(); }
+  size_t size() const { return value_->size(); }
+
+  bool has(Keys keys) const;
+  JsonNode operator[](Keys keys) const;  // required member
+  std::optional<JsonNode> find(Keys keys) const;
+  JsonNode operator[](size_t index) const;
+
+  // Typed reads of this value.
+  float asFloat(Range range = Range::any()) const;
+  int asInt(int lo, int hi) const;
+  bool asBool() const;
+  std::string asString() const;
+  // A number fills all three components; each component must lie in `range`.
+  Vector3f asVector3(Range range = Range::any()) const;
+  Vector2i asVector2i(int lo, int hi) const;
+
+  // Typed reads of a member, with a default when absent.
+  float getFloat(Keys keys, float def, Range range = Range::any()) const;
+  int getInt(Keys keys, int def, int lo, int hi) const;
+  bool getBool(Keys keys, bool def) const;
+  std::string getString(Keys keys) const;
+  std::string getString(Keys keys, const std::string& def) const;
+  Vector3f getVector3(Keys keys, const Vector3f& def) const;
+
+  // The object's "type", lower-cased, with spaces, hyphens and underscores kept as given.
+  std::string type() const;
+  // States the keys this object's type declares. Every key read before or after must be
+  // declared, by exactly its declared spellings: a read that is not is a defect of the
+  // reader, thrown as std::logic_error. `keys` must outlive the document.
+  void declare(DeclaredKeys keys) const;
+  // Raises an error for the first member that no read asked for.
+  void rejectUnknownKeys() const;
+  [[noreturn]] void fail(const std::string& problem) const;
+
+ private:
+  struct Source {
+    std::filesystem::path file;
+    // Keys read so far, per JSON object, shared by every view of the document.
+    mutable std::map<const nlohmann::json*, std::set<std::string>> used;
+    // The declared keys of the objects whose type declares them.
+    mutable std::map<const nlohmann::json*, DeclaredKeys> declared;
+  };
+  void checkDeclared(Keys keys) const;
+  JsonNode(std::shared_ptr<const nlohmann::json> root, const nlohmann::json* value,
+           std::string path, std::shared_ptr<const Source> source);
+  const char* resolveKey(Keys keys) const;
+
+  std::shared_ptr<const nlohmann::json> root_;
+  const nlohmann::json* value_;
+  std::string path_;
+  std::shared_ptr<const Source> source_;
+};
+
+}  // namespace verity
