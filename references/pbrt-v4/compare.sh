@@ -1,5 +1,5 @@
 #!/bin/sh
-# One comparison of two of pbrt-v4's integrators on one scene, as the README's table reports it:
+# One comparison of two of pbrt-v4's integrators on one scene, as reports/validation-findings.md tabulates it:
 #   references/pbrt-v4/compare.sh VERITY SCENE INTEGRATOR_A INTEGRATOR_B [extra verity options]
 # run from the repository root. Prints one table row: rejected tests, smallest p, the largest
 # |z|, the whole-image bias detectable with 90% power, and the verdict.
