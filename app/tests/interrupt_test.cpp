@@ -15,7 +15,7 @@
 #include "testing/child_process.h"
 
 namespace verity {
-namespace interrupt_test {
+namespace {
 
 using testing::spawn;
 using testing::waitExit;
@@ -63,5 +63,5 @@ TEST(Interrupt, PartialImageEqualsRenderOfCompletedPasses) {
   }
 }
 
-}  // namespace interrupt_test
+}  // namespace
 }  // namespace verity

@@ -31,7 +31,7 @@
 #include "validation/studies/timed_render.h"
 
 namespace verity::validation {
-namespace pbrt4_crosscheck_test {
+namespace {
 
 constexpr int kTileSize = 8;
 constexpr int kBatches = 16;
@@ -112,5 +112,5 @@ TEST(Pbrt4Crosscheck, ARoughGlassOfAnotherRoughnessIsRejected) {
   EXPECT_GT(family.decide("alpha 0.2 against pbrt-v4's 0.3").rejections, 0);
 }
 
-}  // namespace pbrt4_crosscheck_test
+}  // namespace
 }  // namespace verity::validation

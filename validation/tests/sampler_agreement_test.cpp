@@ -20,7 +20,7 @@
 #include "validation/compare/suite_samplers.h"
 
 namespace verity::validation {
-namespace sampler_agreement_test {
+namespace {
 
 constexpr int kWidth = 32;
 constexpr int kTileSize = 16;
@@ -59,5 +59,5 @@ TEST(SamplerAgreement, EverySamplerEstimatesTheIndependentSamplersImage) {
   EXPECT_EQ(family.decide("samplers against independent samples").rejections, 0);
 }
 
-}  // namespace sampler_agreement_test
+}  // namespace
 }  // namespace verity::validation

@@ -17,7 +17,7 @@
 #include "integrators/tests/bdpt_test_util.h"
 
 namespace verity {
-namespace bdpt_strategies_test {
+namespace {
 
 using bdpt_test::RegionEstimate;
 using Estimates = std::vector<std::vector<RegionEstimate>>;  // [1 + component][region]
@@ -140,5 +140,5 @@ TEST_F(BdptStrategies, MissingStrategyFails) {
   EXPECT_GT(lengthMismatches(dropped, 1, false), 0);
 }
 
-}  // namespace bdpt_strategies_test
+}  // namespace
 }  // namespace verity

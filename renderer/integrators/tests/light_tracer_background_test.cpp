@@ -19,7 +19,7 @@
 #include "integrators/tests/bdpt_test_util.h"
 
 namespace verity {
-namespace light_tracer_background_test {
+namespace {
 
 using bdpt_test::estimateRegions;
 
@@ -116,5 +116,5 @@ INSTANTIATE_TEST_SUITE_P(
                            R"("vfov": 50, "resolution": [24, 20], "aperture": 0.2, "fdist": 4)")}),
     [](const auto& info) { return std::string(info.param.name); });
 
-}  // namespace light_tracer_background_test
+}  // namespace
 }  // namespace verity

@@ -15,7 +15,7 @@
 #include "integrators/tests/bdpt_test_util.h"
 
 namespace verity {
-namespace light_tracer_normalisation_test {
+namespace {
 
 using bdpt_test::estimateRegions;
 
@@ -100,5 +100,5 @@ INSTANTIATE_TEST_SUITE_P(
                           R"({"translate": [0, 0.2, 1]})", false}),
     [](const auto& info) { return std::string(info.param.name); });
 
-}  // namespace light_tracer_normalisation_test
+}  // namespace
 }  // namespace verity

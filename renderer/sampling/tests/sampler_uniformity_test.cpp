@@ -23,7 +23,7 @@
 #include "sampling/stratified_sampler.h"
 
 namespace verity {
-namespace sampler_uniformity_test {
+namespace {
 
 constexpr int kWidth = 48, kHeight = 48, kSamples = 64, kDimensions = 8;
 constexpr double kFamilyLevel = 0.01;
@@ -113,5 +113,5 @@ TEST(SamplerUniformity, ChiSquareOverPixelsAndIndices) {
   }
 }
 
-}  // namespace sampler_uniformity_test
+}  // namespace
 }  // namespace verity

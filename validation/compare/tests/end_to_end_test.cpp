@@ -15,7 +15,7 @@
 #include "validation/compare/image_comparison.h"
 
 namespace verity::validation {
-namespace end_to_end_test {
+namespace {
 
 // A sphere on a floor under a small downward-facing area light (strategies differ most for
 // small lights), a black background, direct and one-bounce indirect light.
@@ -96,5 +96,5 @@ TEST_F(EndToEnd, OnePercentBrightnessErrorIsDetected) {
       brighterNee.holm.rejections);
 }
 
-}  // namespace end_to_end_test
+}  // namespace
 }  // namespace verity::validation
