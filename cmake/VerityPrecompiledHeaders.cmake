@@ -9,7 +9,7 @@
 # (GCC 12), a third of parsing it, and two thirds of the library's files do not use it; most
 # tests do. CLI11 stays out of both: its header defines objects in every file that includes it.
 # Reuse needs the same compiler flags, so the position-independent installed libraries
-# (verity_chi2_core, verity_stats) and the targets that do not link verity_renderer compile
+# (verity_chi2, verity_stats) and the targets that do not link verity_renderer compile
 # without them. A header is included before each file's own includes, which is harmless here
 # (no file defines a macro before its includes). VERITY_PRECOMPILED_HEADERS=OFF compiles every
 # file on its own, which shows a missing include. ccache reuses its results for these files
