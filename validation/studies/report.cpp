@@ -26,8 +26,9 @@ int makeReport(const std::vector<std::filesystem::path>& inputs,
     throw VerityError(files, "", "no study records in these results files");
   }
   std::filesystem::create_directories(outDir);
-  nlohmann::json summary = summarize(records);
-  summary["text"] = summaryText(summary);
+  const Summary typed = summarize(records);
+  nlohmann::json summary = toJson(typed);
+  summary["text"] = summaryText(typed);
   summary["revision"] = sourceRevision();
   summary["created"] = timestamp();
   summary["machine"] = toJson(machineInfo());

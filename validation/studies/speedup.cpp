@@ -14,10 +14,18 @@ namespace verity::studies {
 
 namespace {
 
-std::string speedupKey(const FieldReader& r) {
-  return fmt::format("{}|{}x{}|{}|{}|{}|{}|{}", r.text("scene"), r.integer("width"),
-                     r.integer("height"), r.text("integrator"), r.integer("max_bounces"),
-                     r.integer("threads"), r.integer("spp"), r.integer("repeat"));
+// What tells one run of the study from another.
+struct SpeedupRunKey {
+  std::string scene;
+  int width, height;
+  std::string integrator;
+  int maxBounces, threads, spp, repeat;
+  auto operator<=>(const SpeedupRunKey&) const = default;
+};
+
+SpeedupRunKey speedupRunKey(const FieldReader& r) {
+  return {r.text("scene"),          r.integer("width"),   r.integer("height"), r.text("integrator"),
+          r.integer("max_bounces"), r.integer("threads"), r.integer("spp"),    r.integer("repeat")};
 }
 
 }  // namespace
@@ -32,7 +40,7 @@ StudyProgress runSpeedupStudy(const SpeedupConfig& config,
   const Vector2i resolution = file.scene->camera().resolution();
   const MachineInfo machine = machineInfo();
   const std::string revision = sourceRevision();
-  StudyOutput output(config.output, "speedup", speedupKey);
+  KeyedStudyOutput output(config.output, "speedup", speedupRunKey);
 
   std::vector<StudyRun> runs;
   for (int repeat = 0; repeat < config.repeats; ++repeat) {
