@@ -69,7 +69,6 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
   checkReferenceMatches(referencePath, reference, config.scene, resolution, config.force, log);
 
   const MachineInfo machine = machineInfo();
-  const std::string revision = sourceRevision();
   KeyedStudyOutput output(config.output, "convergence", convergenceRunKey);
   const double largestBudget = *std::max_element(config.budgets.begin(), config.budgets.end());
   const std::filesystem::path imageDir =
@@ -126,7 +125,7 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
                                     {"mean_variance", error.meanVariance}});
                    else
                      record["rel_variance_omitted"] = kCorrelatedSamplesNote;
-                   record.update(provenance(machine, revision));
+                   record.update(provenance(machine));
                    if (config.errorImages && ti == 0 && run == 0 && budget == largestBudget) {
                      std::filesystem::create_directories(imageDir);
                      const std::filesystem::path npy =

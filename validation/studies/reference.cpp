@@ -7,11 +7,11 @@
 
 #include "core/error.h"
 #include "core/hash.h"
+#include "core/version.h"
 #include "film/image_io.h"
 #include "sampling/sampler.h"
 #include "validation/studies/machine_info.h"
 #include "validation/studies/relative_error.h"
-#include "validation/studies/seeds.h"
 #include "validation/studies/study_scene.h"
 #include "validation/studies/timed_render.h"
 
@@ -51,13 +51,12 @@ ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup&
   ImageChannels image = filmChannels(film, true);
   const double ownRelMse = referenceRelMse(image);
   const MachineInfo machine = machineInfo();
-  const std::string revision = sourceRevision();
   image.attributes["verity:scene"] = config.scene.string();
   image.attributes["verity:integrator"] = settings.type;
   image.attributes["verity:max_bounces"] = std::to_string(settings.maxBounces);
   image.attributes["verity:spp"] = std::to_string(timed.stats.passes);
   image.attributes["verity:seed"] = std::to_string(seed);
-  image.attributes["verity:revision"] = revision;
+  image.attributes["verity:revision"] = kRevision;
 
   ReferenceResult result;
   std::filesystem::create_directories(config.directory);
@@ -94,7 +93,7 @@ ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup&
       {"threads", threads > 0 ? threads : machine.cores},
       {"ranks", group.size()},
       {"machine", toJson(machine)},
-      {"revision", revision},
+      {"revision", kRevision},
       {"created", timestamp()},
       {"format", fmt::format("OpenEXR, {}, ZIP; R, G, B, variance.R/G/B, samples",
                              halfFloat ? "half float (samples 32-bit float)" : "32-bit float")},

@@ -39,7 +39,6 @@ StudyProgress runSpeedupStudy(const SpeedupConfig& config,
       prepareIntegrators(file, config.integrators, config.maxBounces);
   const Vector2i resolution = file.scene->camera().resolution();
   const MachineInfo machine = machineInfo();
-  const std::string revision = sourceRevision();
   KeyedStudyOutput output(config.output, "speedup", speedupRunKey);
 
   std::vector<StudyRun> runs;
@@ -62,7 +61,7 @@ StudyProgress runSpeedupStudy(const SpeedupConfig& config,
                    {"cpu_seconds", timed.cpuSeconds},
                    {"rays", timed.stats.rays},
                });
-               record.update(provenance(machine, revision));
+               record.update(provenance(machine));
                return fmt::format(
                    "{} threads={} repeat={}: {:.3f} s wall, {:.3f} s CPU, {:.3g} Mrays/s",
                    p.settings.type, threads, repeat, timed.wallSeconds, timed.cpuSeconds,

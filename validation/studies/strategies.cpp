@@ -115,7 +115,6 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
     checkReferenceMatches(config.reference, *reference, config.scene, resolution, config.force,
                           log);
   const MachineInfo machine = machineInfo();
-  const std::string revision = sourceRevision();
   const int threads = config.threads > 0 ? config.threads : std::max(1, machine.cores);
   const double largestBudget = *std::max_element(config.budgets.begin(), config.budgets.end());
   const std::filesystem::path imageDir =
@@ -220,7 +219,7 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
                      {"lengths", lengthList},
                      {"bdpt_lengths", lengths.record},
                      {"path_tracer", traced.record}});
-      record.update(provenance(machine, revision));
+      record.update(provenance(machine));
       if (reference) {
         const auto it = reference->attributes.find("verity:max_bounces");
         record["reference"] = config.reference.string();

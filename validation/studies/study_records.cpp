@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/version.h"
 #include "validation/studies/json_lines.h"
 #include "validation/studies/study_scene.h"
 
@@ -61,10 +62,10 @@ nlohmann::json recordHeader(const std::string& study, const std::filesystem::pat
   };
 }
 
-nlohmann::json provenance(const MachineInfo& machine, const std::string& revision) {
+nlohmann::json provenance(const MachineInfo& machine) {
   return {
       {"hostname", machine.hostname}, {"cpu_model", machine.cpuModel}, {"cores", machine.cores},
-      {"revision", revision},         {"time", timestamp()},
+      {"revision", kRevision},        {"time", timestamp()},
   };
 }
 

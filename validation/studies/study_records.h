@@ -85,7 +85,8 @@ class KeyedStudyOutput final : public StudyOutput {
 // The fields that say which render a record is of; its key is drawn from them.
 nlohmann::json recordHeader(const std::string& study, const std::filesystem::path& scene,
                             const Vector2i& resolution, const IntegratorSettings& settings);
-// The fields that say where and when a record was measured.
-nlohmann::json provenance(const MachineInfo& machine, const std::string& revision);
+// The fields that say where and when a record was measured, and the revision the program was
+// built from.
+nlohmann::json provenance(const MachineInfo& machine);
 
 }  // namespace verity::studies
