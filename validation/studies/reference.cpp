@@ -11,28 +11,12 @@
 #include "film/image_io.h"
 #include "sampling/sampler.h"
 #include "validation/studies/machine_info.h"
+#include "validation/studies/reference_match.h"
 #include "validation/studies/relative_error.h"
 #include "validation/studies/study_scene.h"
 #include "validation/studies/timed_render.h"
 
 namespace verity::studies {
-
-namespace {
-
-// A reference with an infinite mean or variance (beyond 32-bit floats) would make every
-// error measured against it meaningless.
-void checkFinite(const ImageChannels& image, const std::filesystem::path& file) {
-  for (const auto& [name, plane] : image.planes)
-    for (size_t i = 0; i < plane.size(); ++i)
-      if (!std::isfinite(plane[i]))
-        throw VerityError(
-            file.string(), "",
-            fmt::format("channel {} at pixel ({}, {}) is {}: the reference's "
-                        "values exceed 32-bit floats; refusing to write it",
-                        name, i % size_t(image.width), i / size_t(image.width), plane[i]));
-}
-
-}  // namespace
 
 ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup& group) {
   const SceneFile file = loadSceneAtWidth(config.scene, config.resolution);
@@ -70,7 +54,10 @@ ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup&
   // MSE. A brighter image (a visible emitter, say) is written in 32-bit floats instead: half
   // floats would store Inf. Written under a temporary name and renamed when whole: a job
   // killed meanwhile leaves no image that looks complete.
-  checkFinite(image, result.image);
+  // A reference with an infinite mean or variance (beyond 32-bit floats) would make every
+  // error measured against it meaningless.
+  refuseNonFinite(image, result.image,
+                  "the reference's values exceed 32-bit floats; refusing to write it");
   const bool halfFloat = fitsHalfFloat(image);
   const std::filesystem::path writing = result.image.string() + ".writing";
   writeExr(writing, image, halfFloat);
