@@ -63,10 +63,9 @@ nlohmann::json recordHeader(const std::string& study, const std::filesystem::pat
 }
 
 nlohmann::json provenance(const MachineInfo& machine) {
-  return {
-      {"hostname", machine.hostname}, {"cpu_model", machine.cpuModel}, {"cores", machine.cores},
-      {"revision", kRevision},        {"time", timestamp()},
-  };
+  nlohmann::json fields = toJson(machine);
+  fields.update({{"revision", kRevision}, {"time", timestamp()}});
+  return fields;
 }
 
 }  // namespace verity::studies
