@@ -14,8 +14,8 @@
 #include "commands/report_command.h"
 #include "commands/study_command.h"
 #include "core/error.h"
+#include "core/version.h"
 #include "distributed/process_group.h"
-#include "version.h"
 
 namespace {
 

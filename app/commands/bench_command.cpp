@@ -19,6 +19,7 @@
 #include "sampling/independent_sampler.h"
 #include "sampling/sampler_registry.h"
 #include "sampling/warp.h"
+#include "validation/studies/fit.h"
 #include "validation/studies/relative_error.h"
 #include "validation/studies/seeds.h"
 #include "validation/studies/study_sampler.h"
@@ -28,6 +29,8 @@
 namespace verity {
 
 namespace {
+
+using studies::median;
 
 struct BenchArgs {
   std::string scene;
@@ -107,11 +110,6 @@ double replayedSecondsPerSample(const Scene& scene, const SampleRays& rays) {
       scene.intersect(r.ray, si);
   }
   return seconds(std::chrono::steady_clock::now() - start) / rays.samples;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
 }
 
 // BDPT against the path tracer with next-event estimation: time per sample single-threaded

@@ -30,7 +30,9 @@ void logLine(const std::string& line) {
 struct Budgets {
   std::shared_ptr<std::vector<int>> spp = std::make_shared<std::vector<int>>();
   std::shared_ptr<std::vector<double>> time = std::make_shared<std::vector<double>>();
-  std::string type() const { return time->empty() ? "spp" : "time"; }
+  studies::BudgetType type() const {
+    return time->empty() ? studies::BudgetType::Spp : studies::BudgetType::Time;
+  }
   std::vector<double> values() const {
     return time->empty() ? std::vector<double>(spp->begin(), spp->end()) : *time;
   }

@@ -13,9 +13,9 @@
 
 #include "compare_cli.h"
 #include "core/error.h"
+#include "core/hash.h"
 #include "film/image_io.h"
 #include "validation/compare/rgb_channels.h"
-#include "validation/studies/seeds.h"
 
 namespace verity::validation {
 namespace {
@@ -28,7 +28,7 @@ using testing::sideArguments;
 // Planes named `names` (R, G, B by default) of exponential values with mean 1.
 ImageChannels noise(int width, int height, const std::string& seedName,
                     const std::vector<std::string>& names = {"R", "G", "B"}) {
-  std::mt19937_64 rng(studies::hashString(seedName));
+  std::mt19937_64 rng(hashString(seedName));
   std::exponential_distribution<float> exp1(1.0f);
   ImageChannels image;
   image.width = width;

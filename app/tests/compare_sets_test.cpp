@@ -15,11 +15,11 @@
 #include <nlohmann/json.hpp>
 
 #include "compare_cli.h"
+#include "core/hash.h"
 #include "film/image_io.h"
 #include "integrators/integrator_settings.h"
 #include "loader/scene_loader.h"
 #include "render/renderer.h"
-#include "validation/studies/seeds.h"
 
 namespace verity::validation {
 namespace {
@@ -65,7 +65,7 @@ Film render(double rightAlbedo, const std::string& seedName, int spp) {
   Film film(file.scene->camera().resolution());
   RenderOptions options;
   options.samplesPerPixel = spp;
-  file.sampler->setSeed(studies::hashString(seedName));
+  file.sampler->setSeed(hashString(seedName));
   const RenderStats stats = render(*file.scene, *integrator, *file.sampler, film, options);
   EXPECT_EQ(stats.invalidSamples, 0u);
   return film;

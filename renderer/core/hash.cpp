@@ -2,6 +2,16 @@
 
 namespace verity {
 
+uint64_t hashString(std::string_view s) {
+  // The same function as Verity::chi2's seedFromName, which may depend on no Verity code.
+  uint64_t h = 0xcbf29ce484222325ull;  // offset basis
+  for (unsigned char c : s) {
+    h ^= c;
+    h *= 0x100000001b3ull;  // prime
+  }
+  return h;
+}
+
 uint32_t permuteIndex(uint32_t i, uint32_t n, uint64_t key) {
   if (n <= 1) return 0;
   int halfBits = 1;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 
 namespace verity {
 
@@ -27,6 +28,10 @@ uint64_t hashValues(uint64_t first, Rest... rest) {
   ((h = hashCombine(h, static_cast<uint64_t>(rest))), ...);
   return h;
 }
+
+// A stable hash of a string (64-bit FNV-1a, Fowler, Noll and Vo), for seeds keyed by names:
+// tests and studies fix their seeds by name, never by hand.
+uint64_t hashString(std::string_view s);
 
 // A pseudo-random permutation of [0, n), keyed by `key`: a 4-round Feistel network on the
 // smallest power-of-four domain covering n, with cycle walking back into [0, n).

@@ -26,9 +26,9 @@
 #include "film/image_io.h"
 #include "loader/scene_loader.h"
 #include "peer_comparison.h"
+#include "render/render_batches.h"
 #include "validation/compare/batch_regions.h"
 #include "validation/compare/comparison_family.h"
-#include "validation/studies/timed_render.h"
 
 namespace verity::validation {
 namespace {
@@ -105,8 +105,8 @@ TEST(Pbrt4Crosscheck, ARoughGlassOfAnotherRoughnessIsRejected) {
   for (const std::filesystem::path& r : renders) pbrt.addBatch(readExr(r));
   const std::string key = "pbrt-v4 rough-glass-box alpha 0.2 bdpt";
   BatchRegions ours(regionOf, tiles, key);
-  studies::renderBatches(file, "bdpt", -1, kBatches, kBatchSpp, key,
-                         [&](const Film& film) { ours.addBatch(film); });
+  renderBatches(file, "bdpt", -1, kBatches, kBatchSpp, key,
+                [&](const Film& film) { ours.addBatch(film); });
   ComparisonFamily family(kFamilyWiseLevel);
   family.add(key, pbrt.statistics(), ours.statistics());
   EXPECT_GT(family.decide("alpha 0.2 against pbrt-v4's 0.3").rejections, 0);

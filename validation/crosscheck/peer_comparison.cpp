@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "film/image_io.h"
+#include "render/render_batches.h"
 #include "validation/compare/batch_regions.h"
 #include "validation/compare/suite_samplers.h"
-#include "validation/studies/timed_render.h"
 
 namespace verity::validation {
 
@@ -65,11 +65,11 @@ uint64_t compareWithPeer(const PeerComparison& setup, SceneFile file, int sceneI
     const std::string key =
         fmt::format("{}{} {} {}", setup.keyPrefix, scene, integratorName, sampler);
     BatchRegions ours(regionOf, tiles, key), oursImage(whole, 1, key + " image");
-    invalid += studies::renderBatches(file, integratorName, -1, setup.batches, setup.batchSpp, key,
-                                      [&](const Film& film) {
-                                        ours.addBatch(film);
-                                        oursImage.addBatch(film);
-                                      });
+    invalid += renderBatches(file, integratorName, -1, setup.batches, setup.batchSpp, key,
+                             [&](const Film& film) {
+                               ours.addBatch(film);
+                               oursImage.addBatch(film);
+                             });
     fmt::print("| {} | {} | {} | {} |\n", scene, integratorName, sampler,
                relativeDifference(peerImage.statistics(), oursImage.statistics()));
     family.add(key, peer.statistics(), ours.statistics());

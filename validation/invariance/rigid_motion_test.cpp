@@ -25,13 +25,12 @@
 
 #include "integrators/integrator_registry.h"
 #include "integrators/integrator_settings.h"
+#include "render/render_batches.h"
 #include "render/renderer.h"
 #include "validation/compare/batch_regions.h"
 #include "validation/compare/comparison_family.h"
 #include "validation/compare/suite_samplers.h"
-#include "validation/studies/seeds.h"
 #include "validation/studies/study_scene.h"
-#include "validation/studies/timed_render.h"
 
 namespace verity::validation {
 namespace {
@@ -50,8 +49,8 @@ BatchRegions renderBatches(const SceneFile& file, const std::string& integrator,
                            const std::vector<int>& regionOf, int regions, int batches, int spp,
                            const std::string& key) {
   BatchRegions out(regionOf, regions, key);
-  studies::renderBatches(file, integrator, kMaxBounces, batches, spp, key,
-                         [&](const Film& film) { out.addBatch(film); });
+  verity::renderBatches(file, integrator, kMaxBounces, batches, spp, key,
+                        [&](const Film& film) { out.addBatch(film); });
   return out;
 }
 

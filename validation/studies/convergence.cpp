@@ -19,11 +19,22 @@ namespace verity::studies {
 
 namespace {
 
-std::string convergenceKey(const FieldReader& r) {
-  return fmt::format("{}|{}x{}|{}|{}|{}|{}|{}|{}|{}", r.text("scene"), r.integer("width"),
-                     r.integer("height"), r.text("integrator"), r.text("sampler"),
-                     r.integer("max_bounces"), r.integer("threads"), r.text("budget_type"),
-                     r.number("budget"), r.integer("run"));
+// What tells one run of the study from another.
+struct ConvergenceRunKey {
+  std::string scene;
+  int width, height;
+  std::string integrator, sampler;
+  int maxBounces, threads;
+  BudgetType budgetType;
+  double budget;
+  int run;
+  auto operator<=>(const ConvergenceRunKey&) const = default;
+};
+
+ConvergenceRunKey convergenceRunKey(const FieldReader& r) {
+  return {r.text("scene"),    r.integer("width"),       r.integer("height"),  r.text("integrator"),
+          r.text("sampler"),  r.integer("max_bounces"), r.integer("threads"), readBudgetType(r),
+          r.number("budget"), r.integer("run")};
 }
 
 }  // namespace
@@ -58,8 +69,7 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
   checkReferenceMatches(referencePath, reference, config.scene, resolution, config.force, log);
 
   const MachineInfo machine = machineInfo();
-  const std::string revision = sourceRevision();
-  StudyOutput output(config.output, "convergence", convergenceKey);
+  KeyedStudyOutput output(config.output, "convergence", convergenceRunKey);
   const double largestBudget = *std::max_element(config.budgets.begin(), config.budgets.end());
   const std::filesystem::path imageDir =
       config.output.parent_path() / (config.output.stem().string() + "-images");
@@ -80,16 +90,16 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
             header.update({
                 {"sampler", s.type},
                 {"threads", threadCounts[ti]},
-                {"budget_type", config.budgetType},
+                {"budget_type", budgetTypeName(config.budgetType)},
                 {"budget", budget},
                 {"run", run},
             });
             runs.push_back(
                 {header, [&, ti, run, budget, &p = p, &s = s](nlohmann::json& record) {
-                   const uint64_t seed =
-                       runSeed(p.settings.type, s.type, config.budgetType, budget, run);
+                   const uint64_t seed = runSeed(p.settings.type, s.type,
+                                                 budgetTypeName(config.budgetType), budget, run);
                    Film film(resolution);
-                   const bool byTime = config.budgetType == "time";
+                   const bool byTime = config.budgetType == BudgetType::Time;
                    const TimedRender timed =
                        timedRender(file, *s.prototype, *p.integrator, film,
                                    byTime ? 0 : int(std::lround(budget)), threadCounts[ti], seed,
@@ -115,13 +125,12 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
                                     {"mean_variance", error.meanVariance}});
                    else
                      record["rel_variance_omitted"] = kCorrelatedSamplesNote;
-                   record.update(provenance(machine, revision));
+                   record.update(provenance(machine));
                    if (config.errorImages && ti == 0 && run == 0 && budget == largestBudget) {
                      std::filesystem::create_directories(imageDir);
                      const std::filesystem::path npy =
                          imageDir / fmt::format("{}_{}_{}_{}{}.npy", sceneName, p.settings.type,
-                                                s.type, budget,
-                                                config.budgetType == "spp" ? "spp" : "s");
+                                                s.type, budget, budgetUnit(config.budgetType));
                      writeHalfNpy(npy, relativeErrorImage(film, reference),
                                   {size_t(film.height()), size_t(film.width())});
                      record["error_image"] =
@@ -133,8 +142,9 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
                    return fmt::format(
                        "{} {} threads={} {}={} run={}: {} spp, {:.3f} s wall, {:.3f} s "
                        "CPU, relMSE {:.4g}",
-                       p.settings.type, s.type, threadCounts[ti], config.budgetType, budget, run,
-                       timed.stats.passes, timed.wallSeconds, timed.cpuSeconds, error.relMse);
+                       p.settings.type, s.type, threadCounts[ti], budgetTypeName(config.budgetType),
+                       budget, run, timed.stats.passes, timed.wallSeconds, timed.cpuSeconds,
+                       error.relMse);
                  }});
           }
   return executeRuns(group, *std::max_element(threadCounts.begin(), threadCounts.end()), output,

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "distributed/process_group.h"
+#include "validation/studies/budget.h"
 #include "validation/studies/study_records.h"
 
 namespace verity::studies {
@@ -18,7 +19,7 @@ struct ConvergenceConfig {
   // Sampler registry names, each run with every integrator; empty: the scene's own sampler.
   std::vector<std::string> samplers;
   int runs = 4;
-  std::string budgetType = "spp";  // "spp" or "time" (seconds)
+  BudgetType budgetType = BudgetType::Spp;
   std::vector<double> budgets;
   std::vector<int> threads = {0};
   std::filesystem::path reference;  // "": references/<scene>.exr

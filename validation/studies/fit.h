@@ -42,6 +42,8 @@ LineFit fitLine(const std::vector<double>& x, const std::vector<double>& y,
 LineFit fitLogLog(const std::vector<double>& x, const std::vector<double>& y,
                   double confidence = 0.95);
 
-double median(std::vector<double> v);  // NaN for an empty vector
+// The middle value, or the mean of the two middle values of an even count; NaN for an empty
+// vector (a statistic of no runs is no number, never an out-of-range read).
+double median(std::vector<double> v);
 
 }  // namespace verity::studies

@@ -3,8 +3,6 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include <cctype>
-#include <cstdio>
 #include <ctime>
 #include <fstream>
 #include <thread>
@@ -31,21 +29,6 @@ MachineInfo machineInfo() {
 
 nlohmann::json toJson(const MachineInfo& m) {
   return {{"hostname", m.hostname}, {"cpu_model", m.cpuModel}, {"cores", m.cores}};
-}
-
-std::string sourceRevision() {
-  // Read-only: rev-parse takes no lock and writes nothing.
-  const std::string command =
-      fmt::format("git -C '{}' rev-parse HEAD 2>/dev/null", VERITY_SOURCE_DIR);
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return "unknown";
-  char buffer[128] = {};
-  std::string out;
-  while (fgets(buffer, sizeof buffer, pipe)) out += buffer;
-  const int status = pclose(pipe);
-  while (!out.empty() && std::isspace(static_cast<unsigned char>(out.back()))) out.pop_back();
-  if (status != 0 || out.size() != 40) return "unknown";
-  return out;
 }
 
 std::string timestamp() {

@@ -1,5 +1,5 @@
-// What a study record says about where and from what it was made: host, CPU, cores, source
-// revision and time.
+// What a study record says about where and when it was made: host, CPU, cores and time (the
+// revision it was made from is the build's, core/version.h).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -13,8 +13,6 @@ struct MachineInfo {
 };
 MachineInfo machineInfo();
 nlohmann::json toJson(const MachineInfo& m);
-// `git rev-parse HEAD` of the source tree, or "unknown".
-std::string sourceRevision();
 // The local time as ISO 8601.
 std::string timestamp();
 

@@ -36,6 +36,12 @@ const nlohmann::json& FieldReader::array(const char* key) const {
   return v;
 }
 
+const nlohmann::json& FieldReader::object(const char* key) const {
+  const nlohmann::json& v = field(key);
+  if (!v.is_object()) fail(key, "expected an object, found " + v.dump());
+  return v;
+}
+
 void FieldReader::fail(const char* key, const std::string& problem) const {
   throw VerityError(file_, fmt::format("{}, \"{}\"", where_, key), problem);
 }

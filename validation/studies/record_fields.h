@@ -18,6 +18,7 @@ class FieldReader {
   double number(const char* key) const;
   int integer(const char* key) const;
   const nlohmann::json& array(const char* key) const;
+  const nlohmann::json& object(const char* key) const;
   const nlohmann::json& object() const { return object_; }
   const std::string& file() const { return file_; }
   const std::string& where() const { return where_; }

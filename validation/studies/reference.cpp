@@ -7,32 +7,16 @@
 
 #include "core/error.h"
 #include "core/hash.h"
+#include "core/version.h"
 #include "film/image_io.h"
 #include "sampling/sampler.h"
 #include "validation/studies/machine_info.h"
+#include "validation/studies/reference_match.h"
 #include "validation/studies/relative_error.h"
-#include "validation/studies/seeds.h"
 #include "validation/studies/study_scene.h"
 #include "validation/studies/timed_render.h"
 
 namespace verity::studies {
-
-namespace {
-
-// A reference with an infinite mean or variance (beyond 32-bit floats) would make every
-// error measured against it meaningless.
-void checkFinite(const ImageChannels& image, const std::filesystem::path& file) {
-  for (const auto& [name, plane] : image.planes)
-    for (size_t i = 0; i < plane.size(); ++i)
-      if (!std::isfinite(plane[i]))
-        throw VerityError(
-            file.string(), "",
-            fmt::format("channel {} at pixel ({}, {}) is {}: the reference's "
-                        "values exceed 32-bit floats; refusing to write it",
-                        name, i % size_t(image.width), i / size_t(image.width), plane[i]));
-}
-
-}  // namespace
 
 ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup& group) {
   const SceneFile file = loadSceneAtWidth(config.scene, config.resolution);
@@ -51,13 +35,12 @@ ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup&
   ImageChannels image = filmChannels(film, true);
   const double ownRelMse = referenceRelMse(image);
   const MachineInfo machine = machineInfo();
-  const std::string revision = sourceRevision();
   image.attributes["verity:scene"] = config.scene.string();
   image.attributes["verity:integrator"] = settings.type;
   image.attributes["verity:max_bounces"] = std::to_string(settings.maxBounces);
   image.attributes["verity:spp"] = std::to_string(timed.stats.passes);
   image.attributes["verity:seed"] = std::to_string(seed);
-  image.attributes["verity:revision"] = revision;
+  image.attributes["verity:revision"] = kRevision;
 
   ReferenceResult result;
   std::filesystem::create_directories(config.directory);
@@ -71,7 +54,10 @@ ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup&
   // MSE. A brighter image (a visible emitter, say) is written in 32-bit floats instead: half
   // floats would store Inf. Written under a temporary name and renamed when whole: a job
   // killed meanwhile leaves no image that looks complete.
-  checkFinite(image, result.image);
+  // A reference with an infinite mean or variance (beyond 32-bit floats) would make every
+  // error measured against it meaningless.
+  refuseNonFinite(image, result.image,
+                  "the reference's values exceed 32-bit floats; refusing to write it");
   const bool halfFloat = fitsHalfFloat(image);
   const std::filesystem::path writing = result.image.string() + ".writing";
   writeExr(writing, image, halfFloat);
@@ -94,7 +80,7 @@ ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup&
       {"threads", threads > 0 ? threads : machine.cores},
       {"ranks", group.size()},
       {"machine", toJson(machine)},
-      {"revision", revision},
+      {"revision", kRevision},
       {"created", timestamp()},
       {"format", fmt::format("OpenEXR, {}, ZIP; R, G, B, variance.R/G/B, samples",
                              halfFloat ? "half float (samples 32-bit float)" : "32-bit float")},

@@ -21,18 +21,24 @@ bool sameScene(const std::filesystem::path& recorded, const std::filesystem::pat
 
 }  // namespace
 
+void refuseNonFinite(const ImageChannels& image, const std::filesystem::path& file,
+                     const std::string& consequence) {
+  for (const auto& [name, plane] : image.planes)
+    for (size_t i = 0; i < plane.size(); ++i)
+      if (!std::isfinite(plane[i]))
+        throw VerityError(
+            file.string(), "",
+            fmt::format("channel {} at pixel ({}, {}) is {}: {}", name, i % size_t(image.width),
+                        i / size_t(image.width), plane[i], consequence));
+}
+
 void checkReferenceMatches(const std::filesystem::path& referenceFile,
                            const ImageChannels& reference, const std::filesystem::path& scene,
                            const Vector2i& resolution, bool force,
                            const std::function<void(const std::string&)>& log) {
-  for (const auto& [name, plane] : reference.planes)
-    for (size_t i = 0; i < plane.size(); ++i)
-      if (!std::isfinite(plane[i]))
-        throw VerityError(
-            referenceFile.string(), "",
-            fmt::format("channel {} at pixel ({}, {}) is {}: every error measured "
-                        "against it would be meaningless; make the reference again",
-                        name, i % size_t(reference.width), i / size_t(reference.width), plane[i]));
+  refuseNonFinite(reference, referenceFile,
+                  "every error measured against it would be meaningless; make the reference "
+                  "again");
   if (reference.width != resolution.x() || reference.height != resolution.y())
     throw VerityError(
         referenceFile.string(), "",

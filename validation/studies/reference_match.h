@@ -12,6 +12,11 @@
 
 namespace verity::studies {
 
+// Throws VerityError naming `file` when `image` holds a value that is not finite: the channel,
+// the pixel and the value, then `consequence`.
+void refuseNonFinite(const ImageChannels& image, const std::filesystem::path& file,
+                     const std::string& consequence);
+
 // Throws VerityError naming the reference when it holds a value that is not finite (a half-float
 // reference written before they were checked can hold Inf), when its size differs from
 // `resolution`, or when the scene it records (the verity:scene attribute) is not `scene`; with

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/program_files.h"
+#include "core/version.h"
 #include "validation/studies/json_lines.h"
 #include "validation/studies/machine_info.h"
 #include "validation/studies/summary.h"
@@ -26,9 +27,10 @@ int makeReport(const std::vector<std::filesystem::path>& inputs,
     throw VerityError(files, "", "no study records in these results files");
   }
   std::filesystem::create_directories(outDir);
-  nlohmann::json summary = summarize(records);
-  summary["text"] = summaryText(summary);
-  summary["revision"] = sourceRevision();
+  const Summary typed = summarize(records);
+  nlohmann::json summary = toJson(typed);
+  summary["text"] = summaryText(typed);
+  summary["revision"] = kRevision;
   summary["created"] = timestamp();
   summary["machine"] = toJson(machineInfo());
   const std::filesystem::path summaryFile = outDir / "summary.json";

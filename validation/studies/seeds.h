@@ -6,15 +6,13 @@
 
 namespace verity::studies {
 
-// A stable hash of a string (64-bit FNV-1a), for seeds keyed by names.
-uint64_t hashString(const std::string& s);
-// The seed of run `run` of `integrator` at budget (`budgetType`, `budget`).
-uint64_t runSeed(const std::string& integrator, const std::string& budgetType, double budget,
-                 int run);
+// The seed of run `run` of `integrator` at budget `budget` of a kind: a budget type's name
+// (budget.h) or a study's own ("speedup", "bench").
+uint64_t runSeed(const std::string& integrator, const std::string& kind, double budget, int run);
 // The same with sampler `sampler` (a registry name): each sampler's runs have seeds of their
 // own. The independent sampler's are runSeed's above, which it had before samplers were
 // compared, so earlier records and bench figures repeat.
-uint64_t runSeed(const std::string& integrator, const std::string& sampler,
-                 const std::string& budgetType, double budget, int run);
+uint64_t runSeed(const std::string& integrator, const std::string& sampler, const std::string& kind,
+                 double budget, int run);
 
 }  // namespace verity::studies

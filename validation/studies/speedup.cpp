@@ -14,10 +14,18 @@ namespace verity::studies {
 
 namespace {
 
-std::string speedupKey(const FieldReader& r) {
-  return fmt::format("{}|{}x{}|{}|{}|{}|{}|{}", r.text("scene"), r.integer("width"),
-                     r.integer("height"), r.text("integrator"), r.integer("max_bounces"),
-                     r.integer("threads"), r.integer("spp"), r.integer("repeat"));
+// What tells one run of the study from another.
+struct SpeedupRunKey {
+  std::string scene;
+  int width, height;
+  std::string integrator;
+  int maxBounces, threads, spp, repeat;
+  auto operator<=>(const SpeedupRunKey&) const = default;
+};
+
+SpeedupRunKey speedupRunKey(const FieldReader& r) {
+  return {r.text("scene"),          r.integer("width"),   r.integer("height"), r.text("integrator"),
+          r.integer("max_bounces"), r.integer("threads"), r.integer("spp"),    r.integer("repeat")};
 }
 
 }  // namespace
@@ -31,8 +39,7 @@ StudyProgress runSpeedupStudy(const SpeedupConfig& config,
       prepareIntegrators(file, config.integrators, config.maxBounces);
   const Vector2i resolution = file.scene->camera().resolution();
   const MachineInfo machine = machineInfo();
-  const std::string revision = sourceRevision();
-  StudyOutput output(config.output, "speedup", speedupKey);
+  KeyedStudyOutput output(config.output, "speedup", speedupRunKey);
 
   std::vector<StudyRun> runs;
   for (int repeat = 0; repeat < config.repeats; ++repeat) {
@@ -54,7 +61,7 @@ StudyProgress runSpeedupStudy(const SpeedupConfig& config,
                    {"cpu_seconds", timed.cpuSeconds},
                    {"rays", timed.stats.rays},
                });
-               record.update(provenance(machine, revision));
+               record.update(provenance(machine));
                return fmt::format(
                    "{} threads={} repeat={}: {:.3f} s wall, {:.3f} s CPU, {:.3g} Mrays/s",
                    p.settings.type, threads, repeat, timed.wallSeconds, timed.cpuSeconds,

@@ -21,15 +21,22 @@ namespace verity::studies {
 
 namespace {
 
-std::string strategiesKey(const FieldReader& record) {
-  const nlohmann::json& r = record.object();
-  // Records of the one-render study (before budgets and runs) read as run 0 of their spp,
-  // with no path tracer.
-  const std::string pathTracer =
-      r.contains("path_tracer") ? r["path_tracer"].value("integrator", "") : "";
-  return fmt::format("{}|{}x{}|{}|{}|{}|{}|{}", r.value("scene", ""), r.value("width", 0),
-                     r.value("height", 0), r.value("max_bounces", 0), r.value("budget_type", "spp"),
-                     r.value("budget", r.value("spp", 0.0)), r.value("run", 0), pathTracer);
+// What tells one record of the study from another.
+struct StrategiesRunKey {
+  std::string scene;
+  int width, height, maxBounces;
+  BudgetType budgetType;
+  double budget;
+  int run;
+  std::string pathTracer;
+  auto operator<=>(const StrategiesRunKey&) const = default;
+};
+
+StrategiesRunKey strategiesRunKey(const FieldReader& r) {
+  const FieldReader pathTracer(r.object("path_tracer"), r.file(), r.where() + ", \"path_tracer\"");
+  return {
+      r.text("scene"),   r.integer("width"), r.integer("height"), r.integer("max_bounces"),
+      readBudgetType(r), r.number("budget"), r.integer("run"),    pathTracer.text("integrator")};
 }
 
 // Mean over pixels and channels of a film's pixel means.
@@ -56,7 +63,7 @@ ComponentRender renderComponents(const SceneFile& file, const Integrator& integr
       std::make_unique<ComponentImages>(ComponentLayout(kind, settings.maxBounces), resolution),
       Film(resolution),
       {}};
-  const bool byTime = config.budgetType == "time";
+  const bool byTime = config.budgetType == BudgetType::Time;
   const TimedRender timed =
       timedRender(file, *file.sampler, integrator, r.film, byTime ? 0 : int(std::lround(budget)),
                   threads, seed, byTime ? budget : 0, r.components.get());
@@ -108,13 +115,13 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
     checkReferenceMatches(config.reference, *reference, config.scene, resolution, config.force,
                           log);
   const MachineInfo machine = machineInfo();
-  const std::string revision = sourceRevision();
   const int threads = config.threads > 0 ? config.threads : std::max(1, machine.cores);
   const double largestBudget = *std::max_element(config.budgets.begin(), config.budgets.end());
   const std::filesystem::path imageDir =
       config.output.parent_path() / (config.output.stem().string() + "-images");
   // spp budgets keep the seed of the one-render study, so its records stay reproducible.
-  const std::string seedKind = config.budgetType == "spp" ? "strategies" : "strategies time";
+  const std::string seedKind =
+      config.budgetType == BudgetType::Spp ? "strategies" : "strategies time";
 
   // The share of the full image (the reference's max bounces) that paths longer than
   // max_bounces carry, which no strategy here sees.
@@ -126,14 +133,14 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
     referenceMean = sum / (3.0 * reference->width * reference->height);
   }
 
-  StudyOutput output(config.output, "strategies", strategiesKey);
+  KeyedStudyOutput output(config.output, "strategies", strategiesRunKey);
   output.repairTruncatedLine(log);
   StudyProgress progress;
   progress.total = int(config.runs * config.budgets.size());
   for (int run = 0; run < config.runs; ++run)
     for (double budget : config.budgets) {
       nlohmann::json record = recordHeader("strategies", config.scene, resolution, settings);
-      record.update({{"budget_type", config.budgetType},
+      record.update({{"budget_type", budgetTypeName(config.budgetType)},
                      {"budget", budget},
                      {"run", run},
                      {"path_tracer", {{"integrator", ptSettings.type}}}});
@@ -212,7 +219,7 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
                      {"lengths", lengthList},
                      {"bdpt_lengths", lengths.record},
                      {"path_tracer", traced.record}});
-      record.update(provenance(machine, revision));
+      record.update(provenance(machine));
       if (reference) {
         const auto it = reference->attributes.find("verity:max_bounces");
         record["reference"] = config.reference.string();
@@ -224,7 +231,7 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
         std::filesystem::create_directories(imageDir);
         const std::filesystem::path npy =
             imageDir / fmt::format("{}_strategies_{}{}.npy", config.scene.stem().string(), budget,
-                                   config.budgetType == "spp" ? "spp" : "s");
+                                   budgetUnit(config.budgetType));
         writeStrategyImages(npy, *strategies.components);
         record["strategy_images"] =
             std::filesystem::relative(npy, config.output.parent_path().empty()
@@ -238,8 +245,8 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
         log(fmt::format(
             "[{}/{}] strategies {}={} run={}, max bounces {}: bdpt {} spp {:.3f} s (strategies), "
             "{} spp {:.3f} s (path lengths); {} {} spp {:.3f} s",
-            progress.done + progress.skipped, progress.total, config.budgetType, budget, run,
-            settings.maxBounces, strategies.record["spp"].get<int>(),
+            progress.done + progress.skipped, progress.total, budgetTypeName(config.budgetType),
+            budget, run, settings.maxBounces, strategies.record["spp"].get<int>(),
             strategies.record["wall_seconds"].get<double>(), lengths.record["spp"].get<int>(),
             lengths.record["wall_seconds"].get<double>(), ptSettings.type,
             traced.record["spp"].get<int>(), traced.record["wall_seconds"].get<double>()));

@@ -7,13 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "validation/studies/budget.h"
 #include "validation/studies/study_records.h"
 
 namespace verity::studies {
 
 struct StrategiesConfig {
   std::filesystem::path scene;
-  std::string budgetType = "spp";  // "spp" or "time" (seconds)
+  BudgetType budgetType = BudgetType::Spp;
   std::vector<double> budgets = {64};
   int runs = 1;
   int resolution = 0;  // image width; 0: the reference's, else the scene's

@@ -2,10 +2,8 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
-#include <limits>
-
 #include "core/error.h"
+#include "core/version.h"
 #include "validation/studies/json_lines.h"
 #include "validation/studies/study_scene.h"
 
@@ -25,22 +23,14 @@ std::vector<PreparedIntegrator> prepareIntegrators(const SceneFile& file,
   return out;
 }
 
-StudyOutput::StudyOutput(std::filesystem::path file, const std::string& study, Key key)
-    : file_(std::move(file)),
-      fileName_(file_.string()),
-      read_(readJsonLinesFile(file_)),
-      key_(key) {
-  for (size_t i = 0; i < read_.records.size(); ++i)
-    if (read_.records[i].value("study", "") == study)
-      done_.insert(this->key(read_.records[i], fmt::format("record {}", i + 1)));
-}
+StudyOutput::StudyOutput(std::filesystem::path file)
+    : file_(std::move(file)), fileName_(file_.string()), read_(readJsonLinesFile(file_)) {}
 
-std::string StudyOutput::key(const nlohmann::json& record, const std::string& where) const {
-  return key_(FieldReader(record, fileName_, where));
-}
-
-bool StudyOutput::has(const nlohmann::json& record) const {
-  return done_.count(key(record, "a new record")) > 0;
+void StudyOutput::rememberRecords(const std::string& study) {
+  for (size_t i = 0; i < read_.records.size(); ++i) {
+    const FieldReader record(read_.records[i], fileName_, fmt::format("record {}", i + 1));
+    if (record.text("study") == study) remember(record);
+  }
 }
 
 void StudyOutput::repairTruncatedLine(const std::function<void(const std::string&)>& log) {
@@ -56,22 +46,7 @@ void StudyOutput::repairTruncatedLine(const std::function<void(const std::string
 
 void StudyOutput::append(const nlohmann::json& record) {
   appendJsonLine(file_, record);
-  done_.insert(key(record, "a new record"));
-}
-
-void checkBudgets(const std::string& type, const std::vector<double>& budgets) {
-  if (type != "spp" && type != "time")
-    throw VerityError(
-        "", "--spp/--time",
-        "the budget is samples per pixel (--spp) or seconds (--time), not \"" + type + "\"");
-  if (budgets.empty()) throw VerityError("", "--spp/--time", "no budget given");
-  for (double b : budgets) {
-    if (!(b > 0))
-      throw VerityError("", "--" + type, fmt::format("budgets must be positive, not {}", b));
-    if (type == "spp" && (b != std::floor(b) || b > std::numeric_limits<int>::max()))
-      throw VerityError("", "--spp",
-                        fmt::format("samples per pixel must be a whole number, not {}", b));
-  }
+  remember(FieldReader(record, fileName_, "a new record"));
 }
 
 nlohmann::json recordHeader(const std::string& study, const std::filesystem::path& scene,
@@ -87,11 +62,10 @@ nlohmann::json recordHeader(const std::string& study, const std::filesystem::pat
   };
 }
 
-nlohmann::json provenance(const MachineInfo& machine, const std::string& revision) {
-  return {
-      {"hostname", machine.hostname}, {"cpu_model", machine.cpuModel}, {"cores", machine.cores},
-      {"revision", revision},         {"time", timestamp()},
-  };
+nlohmann::json provenance(const MachineInfo& machine) {
+  nlohmann::json fields = toJson(machine);
+  fields.update({{"revision", kRevision}, {"time", timestamp()}});
+  return fields;
 }
 
 }  // namespace verity::studies

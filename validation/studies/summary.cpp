@@ -7,7 +7,6 @@
 #include <limits>
 #include <map>
 #include <set>
-#include <tuple>
 
 #include "validation/studies/fit.h"
 #include "validation/studies/study_sampler.h"
@@ -16,25 +15,6 @@
 namespace verity::studies {
 
 namespace {
-
-nlohmann::json fitJson(const LineFit& f) {
-  auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
-  return {{"n", f.n},
-          {"slope", num(f.slope)},
-          {"intercept", num(f.intercept)},
-          {"slope_std_error", num(f.slopeStdError)},
-          {"slope_low", num(f.slopeLow)},
-          {"slope_high", num(f.slopeHigh)},
-          {"confidence", f.confidence},
-          {"residual_std", num(f.residualStd)}};
-}
-
-std::string fmtFit(const nlohmann::json& f) {
-  if (f["slope"].is_null()) return "n/a";
-  if (f["slope_low"].is_null()) return fmt::format("{:.3f}", f["slope"].get<double>());
-  return fmt::format("{:.3f} [{:.3f}, {:.3f}]", f["slope"].get<double>(),
-                     f["slope_low"].get<double>(), f["slope_high"].get<double>());
-}
 
 double mean(const std::vector<double>& v) {
   double sum = 0;
@@ -51,54 +31,29 @@ double standardError(const std::vector<double>& v) {
   return std::sqrt(ss / double(v.size() - 1) / double(v.size()));
 }
 
-nlohmann::json number(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
-}
-
 // The wall time at which the line fitted to log mean relMSE against log mean wall time reaches
 // `target`, with its inverse-prediction interval (fit.h). "reached" only where the target lies
 // among the means measured: outside them the line is an extrapolation, and the report says
 // "not reached" (below every mean) or "before the smallest budget" (above every mean).
-nlohmann::json timeToAccuracy(const LineFit& fit, const std::vector<double>& meanErr,
+TimeToAccuracy timeToAccuracy(const LineFit& fit, const std::vector<double>& meanErr,
                               double target) {
-  nlohmann::json out = {{"target_rel_mse", target}};
+  TimeToAccuracy out;
+  out.targetRelMse = target;
+  if (fit.n < 3 || meanErr.empty() || !std::isfinite(fit.slope)) return out;
   const auto [lo, hi] = std::minmax_element(meanErr.begin(), meanErr.end());
-  if (fit.n < 3 || meanErr.empty() || !std::isfinite(fit.slope)) {
-    out["status"] = "no fit";
-    return out;
-  }
   const Crossing c = crossing(fit, std::log(target));
-  out["seconds"] = number(std::exp(c.x));
-  if (c.bounded) {
-    out["seconds_low"] = number(std::exp(c.low));
-    out["seconds_high"] = number(std::exp(c.high));
-  }
-  out["status"] = target < *lo   ? "not reached"
-                  : target > *hi ? "before the smallest budget"
-                  : !c.bounded   ? "slope not significant"
-                                 : "reached";
+  out.seconds = std::exp(c.x);
+  out.bounded = c.bounded;
+  if (c.bounded) out.secondsLow = std::exp(c.low), out.secondsHigh = std::exp(c.high);
+  out.status = target < *lo   ? AccuracyStatus::NotReached
+               : target > *hi ? AccuracyStatus::BeforeSmallestBudget
+               : !c.bounded   ? AccuracyStatus::SlopeNotSignificant
+                              : AccuracyStatus::Reached;
   return out;
 }
 
-std::string accuracyText(const nlohmann::json& a) {
-  const std::string status = a["status"].get<std::string>();
-  if (status == "reached")
-    return fmt::format("{:.3g} s [{:.3g}, {:.3g}]", a["seconds"].get<double>(),
-                       a["seconds_low"].get<double>(), a["seconds_high"].get<double>());
-  return status;
-}
-
-// The efficiencies of the convergence groups: (scene, w, h, sampler, budget type, threads) ->
-// integrator -> efficiency.
-using EfficiencyKey = std::tuple<std::string, int, int, std::string, std::string, int>;
-using Efficiencies = std::map<EfficiencyKey, std::map<std::string, double>>;
-// The time budgets of the convergence groups: (scene, w, h, sampler, threads, seconds) ->
-// integrator -> that budget's summary.
-using EqualTimeKey = std::tuple<std::string, int, int, std::string, int, double>;
-using EqualTimes = std::map<EqualTimeKey, nlohmann::json>;
-
 // The summary of the runs of one convergence group at one budget.
-nlohmann::json budgetSummary(double budget, const std::vector<const ConvergenceRun*>& runs) {
+BudgetSummary budgetSummary(double budget, const std::vector<const ConvergenceRun*>& runs) {
   std::vector<double> e, t, c, s, eff, var;
   for (const ConvergenceRun* r : runs) {
     e.push_back(r->relMse);
@@ -108,24 +63,27 @@ nlohmann::json budgetSummary(double budget, const std::vector<const ConvergenceR
     if (r->relVariance) var.push_back(*r->relVariance);
     eff.push_back(1.0 / (r->relMse * r->wallSeconds));
   }
-  return {{"budget", budget},
-          {"mean_rel_mse", mean(e)},
-          {"rel_mse_std_error", number(standardError(e))},
-          {"mean_wall_seconds", mean(t)},
-          {"wall_seconds_std_error", number(standardError(t))},
-          {"mean_spp", mean(s)},
-          {"runs", runs.size()},
-          {"median_rel_mse", median(e)},
-          {"median_rel_variance", number(median(var))},
-          {"median_wall_seconds", median(t)},
-          {"median_cpu_seconds", median(c)},
-          {"median_spp", median(s)},
-          {"median_efficiency", median(eff)}};
+  BudgetSummary b;
+  b.budget = budget;
+  b.runs = runs.size();
+  b.meanRelMse = mean(e);
+  b.relMseStdError = standardError(e);
+  b.meanWallSeconds = mean(t);
+  b.wallSecondsStdError = standardError(t);
+  b.meanSpp = mean(s);
+  b.medianRelMse = median(e);
+  b.medianRelVariance = median(var);
+  b.medianWallSeconds = median(t);
+  b.medianCpuSeconds = median(c);
+  b.medianSpp = median(s);
+  b.medianEfficiency = median(eff);
+  return b;
 }
 
-// The summary of one convergence group (runs of one scene, resolution, integrator, sampler,
-// max bounces, threads and budget type): its fits, time to accuracy, efficiency and budgets.
-nlohmann::json convergenceGroup(const std::vector<const ConvergenceRun*>& runs, double confidence) {
+// The summary of one convergence group: its fits, time to accuracy, efficiency and budgets.
+ConvergenceGroup convergenceGroup(const ConvergenceGroupKey& key,
+                                  const std::vector<const ConvergenceRun*>& runs,
+                                  double confidence) {
   const ConvergenceRun& first = *runs.front();
   std::vector<double> time, spp, err;
   std::map<double, std::vector<const ConvergenceRun*>> byBudget;
@@ -135,133 +93,77 @@ nlohmann::json convergenceGroup(const std::vector<const ConvergenceRun*>& runs, 
     err.push_back(r->relMse);
     byBudget[r->budget].push_back(r);
   }
-  nlohmann::json budgets = nlohmann::json::array();
+  ConvergenceGroup g;
+  g.key = key;
+  g.runs = runs.size();
+  g.relMseEpsilon = first.relMseEpsilon;
+  g.referenceRelMse = first.referenceRelMse;
+  g.relVarianceOmitted = !first.relVariance;
   std::vector<double> meanSpp, meanErr, meanTime;
   for (const auto& [budget, rs] : byBudget) {
-    budgets.push_back(budgetSummary(budget, rs));
-    meanSpp.push_back(budgets.back()["mean_spp"].get<double>());
-    meanErr.push_back(budgets.back()["mean_rel_mse"].get<double>());
-    meanTime.push_back(budgets.back()["mean_wall_seconds"].get<double>());
+    g.budgets.push_back(budgetSummary(budget, rs));
+    meanSpp.push_back(g.budgets.back().meanSpp);
+    meanErr.push_back(g.budgets.back().meanRelMse);
+    meanTime.push_back(g.budgets.back().meanWallSeconds);
   }
   // With one budget, the spread of times is noise, not cost: no slope.
   if (byBudget.size() < 2)
     time.clear(), spp.clear(), err.clear(), meanSpp.clear(), meanTime.clear();
-  const LineFit timeOfMeans = fitLogLog(meanTime, meanErr, confidence);
-  nlohmann::json accuracy = nlohmann::json::array();
+  g.fitTime = fitLogLog(time, err, confidence);
+  g.fitSpp = fitLogLog(spp, err, confidence);
+  g.fitSppOfMeans = fitLogLog(meanSpp, meanErr, confidence);
+  g.fitTimeOfMeans = fitLogLog(meanTime, meanErr, confidence);
   for (double target : kAccuracyTargets)
-    accuracy.push_back(timeToAccuracy(timeOfMeans, meanErr, target));
-  nlohmann::json group = {{"scene", first.scene},
-                          {"width", first.width},
-                          {"height", first.height},
-                          {"integrator", first.integrator},
-                          {"sampler", first.sampler},
-                          {"max_bounces", first.maxBounces},
-                          {"threads", first.threads},
-                          {"budget_type", first.budgetType},
-                          {"runs", runs.size()},
-                          {"rel_mse_epsilon", first.relMseEpsilon},
-                          {"reference_rel_mse", first.referenceRelMse},
-                          {"fit_time", fitJson(fitLogLog(time, err, confidence))},
-                          {"fit_spp", fitJson(fitLogLog(spp, err, confidence))},
-                          {"fit_spp_of_means", fitJson(fitLogLog(meanSpp, meanErr, confidence))},
-                          {"fit_time_of_means", fitJson(timeOfMeans)},
-                          {"time_to_accuracy", accuracy},
-                          {"efficiency", budgets.back()["median_efficiency"].get<double>()},
-                          {"budgets", budgets}};
-  if (!first.relVariance) group["rel_variance_omitted"] = kCorrelatedSamplesNote;
-  return group;
+    g.timeToAccuracy.push_back(timeToAccuracy(g.fitTimeOfMeans, meanErr, target));
+  g.efficiency = g.budgets.back().medianEfficiency;
+  return g;
 }
 
-// The convergence runs grouped by (scene, resolution, integrator, sampler, max bounces,
-// threads, budget type), in the order of those keys.
-std::vector<std::vector<const ConvergenceRun*>> convergenceGroups(
-    const std::vector<ConvergenceRun>& runs) {
-  using GroupKey =
-      std::tuple<std::string, int, int, std::string, std::string, int, int, std::string>;
-  std::map<GroupKey, std::vector<const ConvergenceRun*>> groups;
-  for (const ConvergenceRun& r : runs)
-    groups[{r.scene, r.width, r.height, r.integrator, r.sampler, r.maxBounces, r.threads,
-            r.budgetType}]
-        .push_back(&r);
-  std::vector<std::vector<const ConvergenceRun*>> out;
-  for (auto& [key, members] : groups) out.push_back(std::move(members));
-  return out;
-}
-
-// Per (scene, resolution, sampler, budget type, threads): the most efficient integrator and
-// its ratio to every other.
-nlohmann::json bestEntries(const Efficiencies& efficiencies) {
-  nlohmann::json out = nlohmann::json::array();
+// Per efficiency key: the most efficient integrator and its ratio to every other.
+std::vector<BestIntegrator> bestIntegrators(
+    const std::map<EfficiencyKey, std::map<std::string, double>>& efficiencies) {
+  std::vector<BestIntegrator> out;
   for (const auto& [key, effs] : efficiencies) {
-    const auto& [scene, w, h, sampler, budgetType, threads] = key;
-    std::string best;
-    double bestEff = -1;
+    BestIntegrator b;
+    b.key = key;
+    b.efficiency = -1;
     for (const auto& [name, e] : effs)
-      if (e > bestEff) bestEff = e, best = name;
-    nlohmann::json ratios = nlohmann::json::object();
-    for (const auto& [name, e] : effs) ratios[name] = bestEff / e;
-    out.push_back({{"scene", scene},
-                   {"width", w},
-                   {"height", h},
-                   {"sampler", sampler},
-                   {"budget_type", budgetType},
-                   {"threads", threads},
-                   {"integrator", best},
-                   {"efficiency", bestEff},
-                   {"times_better_than", ratios}});
+      if (e > b.efficiency) b.efficiency = e, b.integrator = name;
+    for (const auto& [name, e] : effs) b.timesBetterThan[name] = b.efficiency / e;
+    out.push_back(std::move(b));
   }
   return out;
 }
 
-nlohmann::json equalTimeEntries(const EqualTimes& equalTime) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const auto& [key, byIntegrator] : equalTime) {
-    const auto& [scene, w, h, sampler, threads, seconds] = key;
-    out.push_back({{"scene", scene},
-                   {"width", w},
-                   {"height", h},
-                   {"sampler", sampler},
-                   {"threads", threads},
-                   {"seconds", seconds},
-                   {"integrators", byIntegrator}});
-  }
-  return out;
-}
-
-// Per (scene, resolution, integrator, max bounces, spp) and thread count: the median wall time
-// and the speed-up over the fewest threads measured.
-nlohmann::json speedupEntries(const std::vector<SpeedupRun>& runs) {
-  using SpeedKey = std::tuple<std::string, int, int, std::string, int, int>;
-  std::map<SpeedKey, std::map<int, std::vector<double>>> speed, speedCpu;
+// Per speed-up key and thread count: the median wall time and the speed-up over the fewest
+// threads measured.
+std::vector<Speedup> speedups(const std::vector<SpeedupRun>& runs) {
+  struct Times {
+    std::vector<double> wall, cpu;
+  };
+  std::map<SpeedupKey, std::map<int, Times>> byKey;
   for (const SpeedupRun& r : runs) {
-    const SpeedKey key{r.scene, r.width, r.height, r.integrator, r.maxBounces, r.spp};
-    speed[key][r.threads].push_back(r.wallSeconds);
-    speedCpu[key][r.threads].push_back(r.cpuSeconds);
+    Times& t = byKey[{r.scene, r.width, r.height, r.integrator, r.maxBounces, r.spp}][r.threads];
+    t.wall.push_back(r.wallSeconds);
+    t.cpu.push_back(r.cpuSeconds);
   }
-  nlohmann::json out = nlohmann::json::array();
-  for (const auto& [key, byThreads] : speed) {
-    const auto& [scene, w, h, integrator, maxBounces, spp] = key;
+  std::vector<Speedup> out;
+  for (const auto& [key, byThreads] : byKey) {
     const int fewest = byThreads.begin()->first;
-    const double base = median(byThreads.begin()->second);
+    const double base = median(byThreads.begin()->second.wall);
     for (const auto& [threads, times] : byThreads) {
-      const double m = median(times);
-      const double s = base / m;
+      Speedup s;
+      s.key = key;
+      s.threads = threads;
+      s.baselineThreads = fewest;
+      s.repeats = times.wall.size();
+      s.medianWallSeconds = median(times.wall);
+      s.speedup = base / s.medianWallSeconds;
       // CPU seconds per wall second: how many cores the render really had. On a loaded
       // machine it stays under the thread count, and so does the speed-up.
-      const double coresUsed = median(speedCpu[key][threads]) / std::max(m, 1e-12);
-      out.push_back({{"scene", scene},
-                     {"width", w},
-                     {"height", h},
-                     {"integrator", integrator},
-                     {"max_bounces", maxBounces},
-                     {"spp", spp},
-                     {"threads", threads},
-                     {"baseline_threads", fewest},
-                     {"repeats", times.size()},
-                     {"median_wall_seconds", m},
-                     {"speedup", s},
-                     {"cores_used", coresUsed},
-                     {"parallel_efficiency", s * fewest / std::max(threads, 1)}});
+      s.coresUsed = median(times.cpu) / std::max(s.medianWallSeconds, 1e-12);
+      s.parallelEfficiency = s.speedup * fewest / std::max(threads, 1);
+      out.push_back(s);
     }
   }
   return out;
@@ -269,159 +171,306 @@ nlohmann::json speedupEntries(const std::vector<SpeedupRun>& runs) {
 
 // One strategies record's strategies ranked by share, and the fewest that carry
 // kCarriedShare of the image.
-nlohmann::json strategiesEntry(const StrategiesRun& r) {
-  std::vector<const StrategyShare*> ranked;
-  for (const StrategyShare& st : r.strategies) ranked.push_back(&st);
-  std::stable_sort(ranked.begin(), ranked.end(),
-                   [](const auto* a, const auto* b) { return a->share > b->share; });
-  nlohmann::json carrying = nlohmann::json::array(), rankedFields = nlohmann::json::array();
-  double carried = 0;
-  for (const StrategyShare* st : ranked) {
-    rankedFields.push_back(st->fields);
-    if (carried >= kCarriedShare) continue;
-    carried += st->share;
-    carrying.push_back(st->fields);
+StrategiesSummary strategiesSummary(const StrategiesKey& key, const StrategiesRun& r) {
+  StrategiesSummary out;
+  out.key = key;
+  out.spp = r.spp;
+  out.shareBeyondMaxBounces = r.shareBeyondMaxBounces;
+  out.ranked = r.strategies;
+  std::stable_sort(
+      out.ranked.begin(), out.ranked.end(),
+      [](const StrategyShare& a, const StrategyShare& b) { return a.share > b.share; });
+  for (const StrategyShare& st : out.ranked) {
+    if (out.carriedShare >= kCarriedShare) break;
+    out.carriedShare += st.share;
+    out.carrying.push_back(st);
   }
-  nlohmann::json entry = {{"scene", r.scene},
-                          {"width", r.width},
-                          {"height", r.height},
-                          {"max_bounces", r.maxBounces},
-                          {"spp", r.spp},
-                          {"carried_share_target", kCarriedShare},
-                          {"carried_share", carried},
-                          {"carrying", carrying},
-                          {"ranked", rankedFields}};
-  if (r.shareBeyondMaxBounces) entry["share_beyond_max_bounces"] = *r.shareBeyondMaxBounces;
-  return entry;
+  return out;
 }
 
 // One strategies record per scene, resolution and max bounces: the one of most samples (of
 // the lowest run), whose shares are the least noisy.
-nlohmann::json strategiesEntries(const std::vector<StrategiesRun>& runs) {
-  std::map<std::string, const StrategiesRun*> kept;
+std::vector<StrategiesSummary> strategiesSummaries(const std::vector<StrategiesRun>& runs) {
+  std::map<StrategiesKey, const StrategiesRun*> kept;
   for (const StrategiesRun& r : runs) {
-    const std::string key = fmt::format("{}|{}x{}|{}", r.scene, r.width, r.height, r.maxBounces);
-    const StrategiesRun*& k = kept[key];
+    const StrategiesRun*& k = kept[{r.scene, r.width, r.height, r.maxBounces}];
     if (!k || r.spp > k->spp || (r.spp == k->spp && r.run < k->run)) k = &r;
   }
-  nlohmann::json out = nlohmann::json::array();
-  for (const auto& [key, r] : kept) out.push_back(strategiesEntry(*r));
+  std::vector<StrategiesSummary> out;
+  for (const auto& [key, r] : kept) out.push_back(strategiesSummary(key, *r));
   return out;
+}
+
+nlohmann::json number(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+}
+
+nlohmann::json toJson(const LineFit& f) {
+  return {{"n", f.n},
+          {"slope", number(f.slope)},
+          {"intercept", number(f.intercept)},
+          {"slope_std_error", number(f.slopeStdError)},
+          {"slope_low", number(f.slopeLow)},
+          {"slope_high", number(f.slopeHigh)},
+          {"confidence", f.confidence},
+          {"residual_std", number(f.residualStd)}};
+}
+
+nlohmann::json toJson(const TimeToAccuracy& a) {
+  nlohmann::json out = {{"target_rel_mse", a.targetRelMse},
+                        {"status", accuracyStatusName(a.status)}};
+  if (a.status == AccuracyStatus::NoFit) return out;
+  out["seconds"] = number(a.seconds);
+  if (a.bounded) {
+    out["seconds_low"] = number(a.secondsLow);
+    out["seconds_high"] = number(a.secondsHigh);
+  }
+  return out;
+}
+
+nlohmann::json toJson(const BudgetSummary& b) {
+  return {{"budget", b.budget},
+          {"mean_rel_mse", b.meanRelMse},
+          {"rel_mse_std_error", number(b.relMseStdError)},
+          {"mean_wall_seconds", b.meanWallSeconds},
+          {"wall_seconds_std_error", number(b.wallSecondsStdError)},
+          {"mean_spp", b.meanSpp},
+          {"runs", b.runs},
+          {"median_rel_mse", b.medianRelMse},
+          {"median_rel_variance", number(b.medianRelVariance)},
+          {"median_wall_seconds", b.medianWallSeconds},
+          {"median_cpu_seconds", b.medianCpuSeconds},
+          {"median_spp", b.medianSpp},
+          {"median_efficiency", b.medianEfficiency}};
+}
+
+nlohmann::json toJson(const ConvergenceGroup& g) {
+  nlohmann::json accuracy = nlohmann::json::array(), budgets = nlohmann::json::array();
+  for (const TimeToAccuracy& a : g.timeToAccuracy) accuracy.push_back(toJson(a));
+  for (const BudgetSummary& b : g.budgets) budgets.push_back(toJson(b));
+  nlohmann::json out = {{"scene", g.key.scene},
+                        {"width", g.key.width},
+                        {"height", g.key.height},
+                        {"integrator", g.key.integrator},
+                        {"sampler", g.key.sampler},
+                        {"max_bounces", g.key.maxBounces},
+                        {"threads", g.key.threads},
+                        {"budget_type", budgetTypeName(g.key.budgetType)},
+                        {"runs", g.runs},
+                        {"rel_mse_epsilon", g.relMseEpsilon},
+                        {"reference_rel_mse", g.referenceRelMse},
+                        {"fit_time", toJson(g.fitTime)},
+                        {"fit_spp", toJson(g.fitSpp)},
+                        {"fit_spp_of_means", toJson(g.fitSppOfMeans)},
+                        {"fit_time_of_means", toJson(g.fitTimeOfMeans)},
+                        {"time_to_accuracy", accuracy},
+                        {"efficiency", g.efficiency},
+                        {"budgets", budgets}};
+  if (g.relVarianceOmitted) out["rel_variance_omitted"] = kCorrelatedSamplesNote;
+  return out;
+}
+
+nlohmann::json toJson(const BestIntegrator& b) {
+  return {{"scene", b.key.scene},
+          {"width", b.key.width},
+          {"height", b.key.height},
+          {"sampler", b.key.sampler},
+          {"budget_type", budgetTypeName(b.key.budgetType)},
+          {"threads", b.key.threads},
+          {"integrator", b.integrator},
+          {"efficiency", b.efficiency},
+          {"times_better_than", b.timesBetterThan}};
+}
+
+nlohmann::json toJson(const EqualTime& e) {
+  nlohmann::json integrators = nlohmann::json::object();
+  for (const auto& [name, c] : e.integrators)
+    integrators[name] = {{"mean_rel_mse", c.meanRelMse},
+                         {"rel_mse_std_error", number(c.relMseStdError)},
+                         {"mean_spp", c.meanSpp},
+                         {"runs", c.runs}};
+  return {{"scene", e.key.scene},      {"width", e.key.width},     {"height", e.key.height},
+          {"sampler", e.key.sampler},  {"threads", e.key.threads}, {"seconds", e.key.seconds},
+          {"integrators", integrators}};
+}
+
+nlohmann::json toJson(const Speedup& s) {
+  return {{"scene", s.key.scene},
+          {"width", s.key.width},
+          {"height", s.key.height},
+          {"integrator", s.key.integrator},
+          {"max_bounces", s.key.maxBounces},
+          {"spp", s.key.spp},
+          {"threads", s.threads},
+          {"baseline_threads", s.baselineThreads},
+          {"repeats", s.repeats},
+          {"median_wall_seconds", s.medianWallSeconds},
+          {"speedup", s.speedup},
+          {"cores_used", s.coresUsed},
+          {"parallel_efficiency", s.parallelEfficiency}};
+}
+
+nlohmann::json toJson(const StrategiesSummary& s) {
+  // The strategies as their records hold them, every field.
+  nlohmann::json carrying = nlohmann::json::array(), ranked = nlohmann::json::array();
+  for (const StrategyShare& st : s.carrying) carrying.push_back(st.fields);
+  for (const StrategyShare& st : s.ranked) ranked.push_back(st.fields);
+  nlohmann::json out = {{"scene", s.key.scene},
+                        {"width", s.key.width},
+                        {"height", s.key.height},
+                        {"max_bounces", s.key.maxBounces},
+                        {"spp", s.spp},
+                        {"carried_share_target", kCarriedShare},
+                        {"carried_share", s.carriedShare},
+                        {"carrying", carrying},
+                        {"ranked", ranked}};
+  if (s.shareBeyondMaxBounces) out["share_beyond_max_bounces"] = *s.shareBeyondMaxBounces;
+  return out;
+}
+
+template <typename T>
+nlohmann::json toJsonArray(const std::vector<T>& items) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const T& item : items) out.push_back(toJson(item));
+  return out;
+}
+
+std::string fitText(const LineFit& f) {
+  if (!std::isfinite(f.slope)) return "n/a";
+  if (!std::isfinite(f.slopeLow)) return fmt::format("{:.3f}", f.slope);
+  return fmt::format("{:.3f} [{:.3f}, {:.3f}]", f.slope, f.slopeLow, f.slopeHigh);
+}
+
+std::string accuracyText(const TimeToAccuracy& a) {
+  if (a.status == AccuracyStatus::Reached)
+    return fmt::format("{:.3g} s [{:.3g}, {:.3g}]", a.seconds, a.secondsLow, a.secondsHigh);
+  return accuracyStatusName(a.status);
 }
 
 }  // namespace
 
-nlohmann::json summarize(const SummaryRecords& records, double confidence) {
-  nlohmann::json convergence = nlohmann::json::array();
-  Efficiencies efficiencies;
-  EqualTimes equalTime;
-  for (const std::vector<const ConvergenceRun*>& runs : convergenceGroups(records.convergence)) {
-    nlohmann::json g = convergenceGroup(runs, confidence);
-    const ConvergenceRun& r = *runs.front();
-    efficiencies[{r.scene, r.width, r.height, r.sampler, r.budgetType, r.threads}][r.integrator] =
-        g["efficiency"].get<double>();
-    if (r.budgetType == "time")
-      for (const nlohmann::json& b : g["budgets"])
-        equalTime[{r.scene, r.width, r.height, r.sampler, r.threads, b["budget"].get<double>()}]
-                 [r.integrator] = {{"mean_rel_mse", b["mean_rel_mse"]},
-                                   {"rel_mse_std_error", b["rel_mse_std_error"]},
-                                   {"mean_spp", b["mean_spp"]},
-                                   {"runs", b["runs"]}};
-    convergence.push_back(std::move(g));
+const char* accuracyStatusName(AccuracyStatus status) {
+  switch (status) {
+    case AccuracyStatus::NoFit:
+      return "no fit";
+    case AccuracyStatus::Reached:
+      return "reached";
+    case AccuracyStatus::NotReached:
+      return "not reached";
+    case AccuracyStatus::BeforeSmallestBudget:
+      return "before the smallest budget";
+    case AccuracyStatus::SlopeNotSignificant:
+      return "slope not significant";
   }
-  return {{"convergence", convergence},
-          {"best", bestEntries(efficiencies)},
-          {"speedup", speedupEntries(records.speedup)},
-          {"strategies", strategiesEntries(records.strategies)},
-          {"equal_time", equalTimeEntries(equalTime)},
-          {"confidence", confidence}};
+  return "";
 }
 
-nlohmann::json summarize(const std::vector<nlohmann::json>& records, const std::string& file,
-                         double confidence) {
+Summary summarize(const SummaryRecords& records, double confidence) {
+  Summary summary;
+  summary.confidence = confidence;
+  std::map<ConvergenceGroupKey, std::vector<const ConvergenceRun*>> groups;
+  for (const ConvergenceRun& r : records.convergence)
+    groups[{r.scene, r.width, r.height, r.integrator, r.sampler, r.maxBounces, r.threads,
+            r.budgetType}]
+        .push_back(&r);
+  std::map<EfficiencyKey, std::map<std::string, double>> efficiencies;
+  std::map<EqualTimeKey, std::map<std::string, EqualTimeCell>> equalTime;
+  for (const auto& [key, runs] : groups) {
+    ConvergenceGroup g = convergenceGroup(key, runs, confidence);
+    efficiencies[{key.scene, key.width, key.height, key.sampler, key.budgetType, key.threads}]
+                [key.integrator] = g.efficiency;
+    if (key.budgetType == BudgetType::Time)
+      for (const BudgetSummary& b : g.budgets)
+        equalTime[{key.scene, key.width, key.height, key.sampler, key.threads, b.budget}]
+                 [key.integrator] = {b.meanRelMse, b.relMseStdError, b.meanSpp, b.runs};
+    summary.convergence.push_back(std::move(g));
+  }
+  summary.best = bestIntegrators(efficiencies);
+  summary.speedup = speedups(records.speedup);
+  summary.strategies = strategiesSummaries(records.strategies);
+  for (auto& [key, integrators] : equalTime)
+    summary.equalTime.push_back({key, std::move(integrators)});
+  return summary;
+}
+
+Summary summarize(const std::vector<nlohmann::json>& records, const std::string& file,
+                  double confidence) {
   SummaryRecords typed;
   addSummaryRecords(records, file, typed);
   return summarize(typed, confidence);
 }
 
-std::string summaryText(const nlohmann::json& summary) {
+nlohmann::json toJson(const Summary& summary) {
+  return {{"convergence", toJsonArray(summary.convergence)},
+          {"best", toJsonArray(summary.best)},
+          {"speedup", toJsonArray(summary.speedup)},
+          {"strategies", toJsonArray(summary.strategies)},
+          {"equal_time", toJsonArray(summary.equalTime)},
+          {"confidence", summary.confidence}};
+}
+
+std::string summaryText(const Summary& summary) {
+  const int percent = int(std::lround(100 * summary.confidence));
   std::string s;
-  if (!summary["convergence"].empty()) {
+  if (!summary.convergence.empty()) {
     s += fmt::format(
         "Convergence ({}% confidence intervals of the log-log slopes; relMSE epsilon {})\n",
-        int(std::lround(100 * summary["confidence"].get<double>())),
-        summary["convergence"][0]["rel_mse_epsilon"].get<double>());
+        percent, summary.convergence[0].relMseEpsilon);
     s += fmt::format("{:<18} {:<16} {:<11} {:>7} {:>5} {:>28} {:>28} {:>11}\n", "scene",
                      "integrator", "sampler", "threads", "runs", "slope vs time", "slope vs spp",
                      "efficiency");
-    for (const nlohmann::json& g : summary["convergence"])
-      s += fmt::format("{:<18} {:<16} {:<11} {:>7} {:>5} {:>28} {:>28} {:>11.4g}\n",
-                       g["scene"].get<std::string>(), g["integrator"].get<std::string>(),
-                       g["sampler"].get<std::string>(), g["threads"].get<int>(),
-                       g["runs"].get<size_t>(), fmtFit(g["fit_time"]), fmtFit(g["fit_spp"]),
-                       g["efficiency"].get<double>());
+    for (const ConvergenceGroup& g : summary.convergence)
+      s += fmt::format("{:<18} {:<16} {:<11} {:>7} {:>5} {:>28} {:>28} {:>11.4g}\n", g.key.scene,
+                       g.key.integrator, g.key.sampler, g.key.threads, g.runs, fitText(g.fitTime),
+                       fitText(g.fitSpp), g.efficiency);
     std::set<std::string> omitted;
-    for (const nlohmann::json& g : summary["convergence"])
-      if (g.contains("rel_variance_omitted")) omitted.insert(g["sampler"].get<std::string>());
+    for (const ConvergenceGroup& g : summary.convergence)
+      if (g.relVarianceOmitted) omitted.insert(g.key.sampler);
     for (const std::string& sampler : omitted)
       s += fmt::format("no rel_variance for the {} sampler: {}\n", sampler, kCorrelatedSamplesNote);
+    s += fmt::format("Time to accuracy (wall seconds to reach the relative MSE, {}% interval)\n",
+                     percent);
   }
-  bool accuracyHeader = false;
-  for (const nlohmann::json& g : summary["convergence"]) {
-    if (!g.contains("time_to_accuracy")) continue;
-    if (!accuracyHeader) {
-      s += fmt::format("Time to accuracy (wall seconds to reach the relative MSE, {}% interval)\n",
-                       int(std::lround(100 * summary["confidence"].get<double>())));
-      accuracyHeader = true;
-    }
+  for (const ConvergenceGroup& g : summary.convergence) {
     std::string cells;
-    for (const nlohmann::json& a : g["time_to_accuracy"])
-      cells += fmt::format("  {:g}: {}", a["target_rel_mse"].get<double>(), accuracyText(a));
-    s += fmt::format("{:<18} {:<16} {:<11} {:>2} threads {}\n", g["scene"].get<std::string>(),
-                     g["integrator"].get<std::string>(), g["sampler"].get<std::string>(),
-                     g["threads"].get<int>(), cells);
+    for (const TimeToAccuracy& a : g.timeToAccuracy)
+      cells += fmt::format("  {:g}: {}", a.targetRelMse, accuracyText(a));
+    s += fmt::format("{:<18} {:<16} {:<11} {:>2} threads {}\n", g.key.scene, g.key.integrator,
+                     g.key.sampler, g.key.threads, cells);
   }
-  for (const nlohmann::json& e : summary.value("equal_time", nlohmann::json::array())) {
+  for (const EqualTime& e : summary.equalTime) {
     std::string cells;
-    for (const auto& [name, v] : e["integrators"].items())
-      cells += fmt::format("{}{} {:.4g}", cells.empty() ? "" : ", ", name,
-                           v["mean_rel_mse"].get<double>());
-    s += fmt::format("equal time on {} ({} sampler, {} threads, {:g} s): relMSE {}\n",
-                     e["scene"].get<std::string>(), e["sampler"].get<std::string>(),
-                     e["threads"].get<int>(), e["seconds"].get<double>(), cells);
+    for (const auto& [name, c] : e.integrators)
+      cells += fmt::format("{}{} {:.4g}", cells.empty() ? "" : ", ", name, c.meanRelMse);
+    s += fmt::format("equal time on {} ({} sampler, {} threads, {:g} s): relMSE {}\n", e.key.scene,
+                     e.key.sampler, e.key.threads, e.key.seconds, cells);
   }
-  for (const nlohmann::json& b : summary["best"]) {
-    s += fmt::format("most efficient on {} ({} sampler, {} threads, {} budgets): {}",
-                     b["scene"].get<std::string>(), b["sampler"].get<std::string>(),
-                     b["threads"].get<int>(), b["budget_type"].get<std::string>(),
-                     b["integrator"].get<std::string>());
+  for (const BestIntegrator& b : summary.best) {
+    s += fmt::format("most efficient on {} ({} sampler, {} threads, {} budgets): {}", b.key.scene,
+                     b.key.sampler, b.key.threads, budgetTypeName(b.key.budgetType), b.integrator);
     std::string others;
-    for (const auto& [name, ratio] : b["times_better_than"].items())
-      if (name != b["integrator"].get<std::string>())
-        others +=
-            fmt::format("{}{:.2f}x {}", others.empty() ? "" : ", ", ratio.get<double>(), name);
+    for (const auto& [name, ratio] : b.timesBetterThan)
+      if (name != b.integrator)
+        others += fmt::format("{}{:.2f}x {}", others.empty() ? "" : ", ", ratio, name);
     s += others.empty() ? "\n" : fmt::format("; its efficiency is {}\n", others);
   }
-  if (!summary["speedup"].empty()) {
+  if (!summary.speedup.empty()) {
     s += "Speed-up (medians of alternating repeats)\n";
     s +=
         fmt::format("{:<18} {:<16} {:>7} {:>8} {:>12} {:>9} {:>11} {:>11}\n", "scene", "integrator",
                     "threads", "repeats", "median s", "speed-up", "par. eff.", "cores used");
-    for (const nlohmann::json& g : summary["speedup"])
+    for (const Speedup& g : summary.speedup)
       s += fmt::format("{:<18} {:<16} {:>7} {:>8} {:>12.4f} {:>9.3f} {:>11.3f} {:>11.2f}\n",
-                       g["scene"].get<std::string>(), g["integrator"].get<std::string>(),
-                       g["threads"].get<int>(), g["repeats"].get<size_t>(),
-                       g["median_wall_seconds"].get<double>(), g["speedup"].get<double>(),
-                       g["parallel_efficiency"].get<double>(), g["cores_used"].get<double>());
+                       g.key.scene, g.key.integrator, g.threads, g.repeats, g.medianWallSeconds,
+                       g.speedup, g.parallelEfficiency, g.coresUsed);
   }
-  for (const nlohmann::json& g : summary["strategies"]) {
+  for (const StrategiesSummary& g : summary.strategies) {
     std::string list;
-    for (const nlohmann::json& st : g["carrying"])
-      list += fmt::format("{}(s={}, t={}) {:.1f}%", list.empty() ? "" : ", ", st["s"].get<int>(),
-                          st["t"].get<int>(), 100 * st["share"].get<double>());
+    for (const StrategyShare& st : g.carrying)
+      list += fmt::format("{}(s={}, t={}) {:.1f}%", list.empty() ? "" : ", ", st.s, st.t,
+                          100 * st.share);
     s += fmt::format("BDPT strategies carrying {:.0f}% of {} ({} spp, max bounces {}): {}\n",
-                     100 * g["carried_share"].get<double>(), g["scene"].get<std::string>(),
-                     g["spp"].get<int>(), g["max_bounces"].get<int>(), list);
+                     100 * g.carriedShare, g.key.scene, g.spp, g.key.maxBounces, list);
   }
   return s;
 }

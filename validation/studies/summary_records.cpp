@@ -24,7 +24,7 @@ ConvergenceRun convergenceRun(const FieldReader& r) {
            "unknown sampler \"" + c.sampler + "\" (expected one of " + samplerTypeList() + ")");
   c.maxBounces = r.integer("max_bounces");
   c.threads = r.integer("threads");
-  c.budgetType = r.text("budget_type");
+  c.budgetType = readBudgetType(r);
   c.budget = r.number("budget");
   c.spp = r.integer("spp");
   c.wallSeconds = r.number("wall_seconds");
@@ -50,8 +50,7 @@ SpeedupRun speedupRun(const FieldReader& r) {
   return s;
 }
 
-StrategiesRun strategiesRun(const FieldReader& r, const nlohmann::json& record,
-                            const std::string& file) {
+StrategiesRun strategiesRun(const FieldReader& r) {
   StrategiesRun s;
   s.scene = r.text("scene");
   s.width = r.integer("width");
@@ -61,11 +60,12 @@ StrategiesRun strategiesRun(const FieldReader& r, const nlohmann::json& record,
   s.run = r.integer("run");
   const nlohmann::json& list = r.array("strategies");
   for (size_t i = 0; i < list.size(); ++i) {
-    const FieldReader st(list[i], file, fmt::format("{}, \"strategies\"[{}]", r.where(), i));
+    const FieldReader st(list[i], r.file(), fmt::format("{}, \"strategies\"[{}]", r.where(), i));
     s.strategies.push_back({st.integer("s"), st.integer("t"), st.number("share"), list[i]});
   }
-  if (record.contains("share_beyond_max_bounces"))
-    s.shareBeyondMaxBounces = record["share_beyond_max_bounces"];
+  // Present where the study had a reference image.
+  if (r.object().contains("share_beyond_max_bounces"))
+    s.shareBeyondMaxBounces = r.number("share_beyond_max_bounces");
   return s;
 }
 
@@ -81,7 +81,7 @@ void addSummaryRecords(const std::vector<nlohmann::json>& records, const std::st
     else if (study == "speedup")
       out.speedup.push_back(speedupRun(r));
     else if (study == "strategies")
-      out.strategies.push_back(strategiesRun(r, records[i], file));
+      out.strategies.push_back(strategiesRun(r));
   }
 }
 

@@ -8,11 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "validation/studies/budget.h"
+
 namespace verity::studies {
 
 // One render of a convergence study.
 struct ConvergenceRun {
-  std::string scene, integrator, sampler, budgetType;
+  std::string scene, integrator, sampler;
+  BudgetType budgetType = BudgetType::Spp;
   int width = 0, height = 0, maxBounces = 0, threads = 0, spp = 0;
   double budget = 0, wallSeconds = 0, cpuSeconds = 0, relMse = 0;
   double relMseEpsilon = 0, referenceRelMse = 0;
@@ -40,7 +43,7 @@ struct StrategiesRun {
   std::string scene;
   int width = 0, height = 0, maxBounces = 0, spp = 0, run = 0;
   std::vector<StrategyShare> strategies;
-  std::optional<nlohmann::json> shareBeyondMaxBounces;
+  std::optional<double> shareBeyondMaxBounces;
 };
 
 struct SummaryRecords {

@@ -1,6 +1,5 @@
 #include "validation/studies/timed_render.h"
 
-#include <fmt/format.h>
 #include <mpi.h>
 
 #include <atomic>
@@ -12,8 +11,6 @@
 
 #include "core/error.h"
 #include "distributed/distributed_render.h"
-#include "validation/studies/seeds.h"
-#include "validation/studies/study_scene.h"
 
 namespace verity::studies {
 
@@ -73,23 +70,6 @@ TimedRender timedRender(const SceneFile& file, const Sampler& prototype,
     watchdog.join();
   }
   return out;
-}
-
-uint64_t renderBatches(const SceneFile& file, const std::string& integrator, int maxBounces,
-                       int batches, int spp, const std::string& key,
-                       const std::function<void(const Film&)>& onBatch) {
-  const auto render = makeIntegrator(studyIntegrator(file, integrator, maxBounces));
-  uint64_t invalid = 0;
-  for (int batch = 0; batch < batches; ++batch) {
-    Film film(file.scene->camera().resolution());
-    RenderOptions options;
-    options.samplesPerPixel = spp;
-    const std::unique_ptr<Sampler> sampler = file.sampler->clone();
-    sampler->setSeed(hashString(fmt::format("{} batch {}", key, batch)));
-    invalid += verity::render(*file.scene, *render, *sampler, film, options).invalidSamples;
-    onBatch(film);
-  }
-  return invalid;
 }
 
 }  // namespace verity::studies

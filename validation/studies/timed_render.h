@@ -1,9 +1,7 @@
-// Renders timed by the wall clock and the process's CPU clock, and independent seeded batches.
+// Renders timed by the wall clock and the process's CPU clock.
 #pragma once
 
 #include <cstdint>
-#include <functional>
-#include <string>
 
 #include "distributed/process_group.h"
 #include "film/film.h"
@@ -26,12 +24,5 @@ TimedRender timedRender(const SceneFile& file, const Sampler& sampler, const Int
                         Film& film, int spp, int threads, uint64_t seed, double timeLimit = 0,
                         ComponentImages* components = nullptr,
                         const ProcessGroup& group = ProcessGroup::solo());
-
-// `batches` independent renders of `spp` samples per pixel with `integrator` (max bounces
-// `maxBounces`, the file's when negative), batch i seeded by hashString("<key> batch <i>");
-// each film is handed to `onBatch`. Returns the invalid samples of all batches.
-uint64_t renderBatches(const SceneFile& file, const std::string& integrator, int maxBounces,
-                       int batches, int spp, const std::string& key,
-                       const std::function<void(const Film&)>& onBatch);
 
 }  // namespace verity::studies

@@ -6,8 +6,8 @@
 
 #include <string>
 
+#include "render/render_batches.h"
 #include "validation/compare/batch_regions.h"
-#include "validation/studies/timed_render.h"
 
 namespace verity::validation::testing {
 
@@ -18,8 +18,8 @@ inline PixelStatistics renderTileBatches(const SceneFile& file, const std::strin
   int tiles = 0;
   const std::vector<int> regionOf = tileRegions(res.x(), res.y(), tileSize, &tiles);
   BatchRegions out(regionOf, tiles, key);
-  studies::renderBatches(file, integrator, maxBounces, batches, spp, key,
-                         [&](const Film& film) { out.addBatch(film); });
+  renderBatches(file, integrator, maxBounces, batches, spp, key,
+                [&](const Film& film) { out.addBatch(film); });
   return out.statistics();
 }
 

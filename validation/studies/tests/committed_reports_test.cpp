@@ -26,9 +26,9 @@ TEST(CommittedReports, EveryReportsResultsAreSummarized) {
       }
     if (files == 0) continue;
     ++folders;
-    nlohmann::json summary;
+    Summary summary;
     ASSERT_NO_THROW(summary = summarize(records)) << folder.path();
-    EXPECT_FALSE(summary["convergence"].empty()) << folder.path() << ": no convergence group";
+    EXPECT_FALSE(summary.convergence.empty()) << folder.path() << ": no convergence group";
   }
   // cornell-box, cornell-box-glass, glossy-cornell-box, samplers, veach-mats.
   EXPECT_GE(folders, 5);

@@ -87,6 +87,7 @@ TEST(StudyFit, LogLogSkipsNonPositiveValues) {
 TEST(StudyFit, MedianOfEvenAndOddCounts) {
   EXPECT_EQ(median({3, 1, 2}), 2);
   EXPECT_EQ(median({4, 1, 3, 2}), 2.5);
+  EXPECT_TRUE(std::isnan(median({})));
 }
 
 TEST(StudySeeds, DependOnEveryPartOfTheKey) {

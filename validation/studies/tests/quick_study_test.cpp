@@ -16,6 +16,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include "film/image_io.h"
 #include "testing/error_of.h"
@@ -103,14 +104,14 @@ TEST(QuickStudy, CornellBoxEndToEnd) {
       EXPECT_TRUE(r.contains(key)) << key;
 
   // Slopes against spp.
-  const nlohmann::json summary = summarize(records, "quick.jsonl");
+  const Summary summary = summarize(records, "quick.jsonl");
   int checked = 0;
-  for (const nlohmann::json& g : summary["convergence"]) {
-    const nlohmann::json& f = g["fit_spp"];
-    SCOPED_TRACE(g["integrator"].get<std::string>());
-    EXPECT_EQ(f["n"], 30);
-    EXPECT_LE(f["slope_low"].get<double>(), -1.0) << summaryText(summary);
-    EXPECT_GE(f["slope_high"].get<double>(), -1.0) << summaryText(summary);
+  for (const ConvergenceGroup& g : summary.convergence) {
+    const LineFit& f = g.fitSpp;
+    SCOPED_TRACE(g.key.integrator);
+    EXPECT_EQ(f.n, 30);
+    EXPECT_LE(f.slopeLow, -1.0) << summaryText(summary);
+    EXPECT_GE(f.slopeHigh, -1.0) << summaryText(summary);
     ++checked;
   }
   EXPECT_EQ(checked, 2);
@@ -147,11 +148,11 @@ TEST(QuickStudy, StrategiesSharesAddUpAndResume) {
   EXPECT_NEAR(total, 1.0, 1e-4);
   EXPECT_EQ(records[0]["strategies"].size(), 14u);  // (s, t) with s + t − 2 ≤ 3, t ≥ 1
 
-  const nlohmann::json summary = summarize(records, "quick.jsonl");
-  ASSERT_EQ(summary["strategies"].size(), 1u);
-  const nlohmann::json& g = summary["strategies"][0];
-  EXPECT_GE(g["carried_share"].get<double>(), kCarriedShare);
-  EXPECT_LT(g["carrying"].size(), g["ranked"].size());
+  const Summary summary = summarize(records, "quick.jsonl");
+  ASSERT_EQ(summary.strategies.size(), 1u);
+  const StrategiesSummary& g = summary.strategies[0];
+  EXPECT_GE(g.carriedShare, kCarriedShare);
+  EXPECT_LT(g.carrying.size(), g.ranked.size());
   fs::remove_all(dir);
 }
 
@@ -179,6 +180,42 @@ TEST(QuickStudy, AResumedSpeedupRecordWithoutAKeyIsAnError) {
   }
   EXPECT_EQ(errorOf([&] { runSpeedupStudy(config, nullptr); }),
             config.output.string() + ": record 2, \"repeat\": missing key");
+  fs::remove_all(dir);
+}
+
+// A strategies record read back to resume a study names what it lacks, rather than reading as
+// a record of budget = its spp, run 0 and no path tracer, which would skip a run not done.
+TEST(QuickStudy, AResumedStrategiesRecordWithoutAKeyIsAnError) {
+  const fs::path dir =
+      fs::path(testing::TempDir()) / ("verity-strategies-resume-" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  StrategiesConfig config;
+  config.scene = fs::path(VERITY_SOURCE_DIR) / "scenes" / "cornell-box.json";
+  config.budgets = {2};
+  config.resolution = 8;
+  config.maxBounces = 1;
+  config.images = false;
+  config.output = dir / "strategies.jsonl";
+  EXPECT_EQ(runStrategiesStudy(config, nullptr).done, 1);
+  const nlohmann::json written = readJsonLines(config.output).at(0);
+  auto resumedWith = [&](const std::function<void(nlohmann::json&)>& change) {
+    nlohmann::json record = written;
+    change(record);
+    std::ofstream(config.output, std::ios::trunc) << record.dump() << "\n";
+    return errorOf([&] { runStrategiesStudy(config, nullptr); });
+  };
+  const std::string where = config.output.string() + ": record 1, ";
+  for (const char* key : {"scene", "width", "budget_type", "budget", "run", "path_tracer"})
+    EXPECT_EQ(resumedWith([&](nlohmann::json& r) { r.erase(key); }),
+              where + "\"" + key + "\": missing key");
+  EXPECT_EQ(resumedWith([](nlohmann::json& r) { r["path_tracer"].erase("integrator"); }),
+            where + "\"path_tracer\", \"integrator\": missing key");
+  EXPECT_EQ(resumedWith([](nlohmann::json& r) { r["budget_type"] = "seconds"; }),
+            where + "\"budget_type\": expected \"spp\" or \"time\", found \"seconds\"");
+  // The record as written resumes: its run is skipped.
+  std::ofstream(config.output, std::ios::trunc) << written.dump() << "\n";
+  EXPECT_EQ(runStrategiesStudy(config, nullptr).skipped, 1);
   fs::remove_all(dir);
 }
 

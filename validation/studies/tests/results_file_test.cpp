@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "testing/error_of.h"
+#include "validation/studies/budget.h"
 #include "validation/studies/json_lines.h"
 #include "validation/studies/study_records.h"
 
@@ -43,7 +44,7 @@ TEST(ResultsFile, CorruptLineInTheMiddleNamesFileAndLine) {
   EXPECT_NE(error.find(file.string()), std::string::npos) << error;
   EXPECT_NE(error.find("line 2"), std::string::npos) << error;
   // A resumed study refuses it too: only a last line can have been cut off by an interruption.
-  EXPECT_NE(errorOf([&] { StudyOutput(file, "convergence", keyOf); }).find("line 2"),
+  EXPECT_NE(errorOf([&] { KeyedStudyOutput(file, "convergence", keyOf); }).find("line 2"),
             std::string::npos);
   fs::remove(file);
 }
@@ -64,7 +65,7 @@ TEST(ResultsFile, OnlyRecordTruncatedIsAnErrorNamingTheLine) {
 TEST(ResultsFile, ResumedStudyRemovesTruncatedLastLineAndSaysSo) {
   const std::string whole = std::string(kRecord) + "\n";
   const fs::path file = writeFile("torn.jsonl", whole + R"({"study": "convergence", "ru)");
-  StudyOutput output(file, "convergence", keyOf);
+  KeyedStudyOutput output(file, "convergence", keyOf);
   EXPECT_TRUE(output.has(nlohmann::json{{"run", 0}}));
   std::vector<std::string> said;
   output.repairTruncatedLine([&](const std::string& line) { said.push_back(line); });
@@ -80,7 +81,7 @@ TEST(ResultsFile, ResumedStudyRemovesTruncatedLastLineAndSaysSo) {
 TEST(ResultsFile, WholeFileIsLeftAlone) {
   const std::string text = std::string(kRecord) + "\n\n" + kRecord + "\n";
   const fs::path file = writeFile("whole.jsonl", text);
-  StudyOutput output(file, "convergence", keyOf);
+  KeyedStudyOutput output(file, "convergence", keyOf);
   std::vector<std::string> said;
   output.repairTruncatedLine([&](const std::string& line) { said.push_back(line); });
   EXPECT_TRUE(said.empty());
@@ -90,10 +91,14 @@ TEST(ResultsFile, WholeFileIsLeftAlone) {
 }
 
 TEST(StudyBudgets, SppMustBeWholeNumbers) {
-  EXPECT_NE(errorOf([] { checkBudgets("spp", {4, 2.5}); }).find("--spp"), std::string::npos);
-  EXPECT_NE(errorOf([] { checkBudgets("spp", {0}); }).find("positive"), std::string::npos);
-  EXPECT_EQ(errorOf([] { checkBudgets("spp", {1, 16}); }), "");
-  EXPECT_EQ(errorOf([] { checkBudgets("time", {0.5}); }), "");
+  EXPECT_NE(errorOf([] {
+              checkBudgets(BudgetType::Spp, {4, 2.5});
+            }).find("--spp"),
+            std::string::npos);
+  EXPECT_NE(errorOf([] { checkBudgets(BudgetType::Spp, {0}); }).find("positive"),
+            std::string::npos);
+  EXPECT_EQ(errorOf([] { checkBudgets(BudgetType::Spp, {1, 16}); }), "");
+  EXPECT_EQ(errorOf([] { checkBudgets(BudgetType::Time, {0.5}); }), "");
 }
 
 }  // namespace

@@ -75,15 +75,19 @@ TEST_F(SamplerStudy, RecordsCarryTheSamplerAndEachSamplerIsASummaryRow) {
   // A resumed study finds every run, each sampler's under its own key.
   EXPECT_EQ(runConvergenceStudy(study_, nullptr).skipped, 8);
 
-  const nlohmann::json summary = summarize(records, "results.jsonl");
-  ASSERT_EQ(summary["convergence"].size(), 2u) << summary.dump(1);
+  const Summary summary = summarize(records, "results.jsonl");
+  ASSERT_EQ(summary.convergence.size(), 2u) << toJson(summary).dump(1);
   std::set<std::string> rows;
-  for (const nlohmann::json& g : summary["convergence"]) {
-    rows.insert(g["sampler"].get<std::string>());
-    EXPECT_EQ(g["runs"], 4);
-    const bool omitted = g["sampler"] == "sobol";
-    EXPECT_EQ(g.contains("rel_variance_omitted"), omitted);
-    EXPECT_EQ(g["budgets"][0]["median_rel_variance"].is_null(), omitted);
+  const nlohmann::json json = toJson(summary);
+  for (size_t i = 0; i < summary.convergence.size(); ++i) {
+    const ConvergenceGroup& g = summary.convergence[i];
+    rows.insert(g.key.sampler);
+    EXPECT_EQ(g.runs, 4u);
+    const bool omitted = g.key.sampler == "sobol";
+    EXPECT_EQ(g.relVarianceOmitted, omitted);
+    EXPECT_EQ(std::isnan(g.budgets[0].medianRelVariance), omitted);
+    EXPECT_EQ(json["convergence"][i].contains("rel_variance_omitted"), omitted);
+    EXPECT_EQ(json["convergence"][i]["budgets"][0]["median_rel_variance"].is_null(), omitted);
   }
   EXPECT_EQ(rows, (std::set<std::string>{"independent", "sobol"}));
   EXPECT_NE(summaryText(summary).find("no rel_variance for the sobol sampler"), std::string::npos)
@@ -181,24 +185,23 @@ TEST(SamplerSummary, EachSamplerIsFittedFromItsOwnRecords) {
       meanTime[sampler].push_back(seconds);
       meanErr[sampler].push_back(sum / 2);
     }
-  const nlohmann::json summary = summarize(records, "synthetic.jsonl");
-  ASSERT_EQ(summary["convergence"].size(), 2u);
-  for (const nlohmann::json& g : summary["convergence"]) {
-    const std::string sampler = g["sampler"].get<std::string>();
+  const Summary summary = summarize(records, "synthetic.jsonl");
+  ASSERT_EQ(summary.convergence.size(), 2u);
+  for (const ConvergenceGroup& g : summary.convergence) {
+    const std::string sampler = g.key.sampler;
     SCOPED_TRACE(sampler);
     const HandFit f = handFit(xs.at(sampler), ys.at(sampler), 2.7764451051977987);
-    EXPECT_EQ(g["fit_spp"]["n"], 6);
-    EXPECT_NEAR(g["fit_spp"]["slope"].get<double>(), f.slope, 1e-9);
-    EXPECT_NEAR(g["fit_spp"]["slope_low"].get<double>(), f.low, 1e-9);
-    EXPECT_NEAR(g["fit_spp"]["slope_high"].get<double>(), f.high, 1e-9);
+    EXPECT_EQ(g.fitSpp.n, 6);
+    EXPECT_NEAR(g.fitSpp.slope, f.slope, 1e-9);
+    EXPECT_NEAR(g.fitSpp.slopeLow, f.low, 1e-9);
+    EXPECT_NEAR(g.fitSpp.slopeHigh, f.high, 1e-9);
     // Time to 1e-2 from the line through the three (mean time, mean relMSE) points: t = 12.706
     // for 1 degree of freedom enters only its interval, so the estimate is checked alone.
     const HandFit m = handFit(meanTime.at(sampler), meanErr.at(sampler), 12.706204736174705);
-    const nlohmann::json& toAccuracy = g["time_to_accuracy"][0];
-    EXPECT_EQ(toAccuracy["target_rel_mse"], 1e-2);
-    EXPECT_NEAR(toAccuracy["seconds"].get<double>(),
-                std::exp((std::log(1e-2) - m.intercept) / m.slope), 1e-9);
-    EXPECT_EQ(g.contains("rel_variance_omitted"), sampler == "sobol");
+    const TimeToAccuracy& toAccuracy = g.timeToAccuracy[0];
+    EXPECT_EQ(toAccuracy.targetRelMse, 1e-2);
+    EXPECT_NEAR(toAccuracy.seconds, std::exp((std::log(1e-2) - m.intercept) / m.slope), 1e-9);
+    EXPECT_EQ(g.relVarianceOmitted, sampler == "sobol");
   }
   // The text table has a row per sampler with its slope and interval.
   const std::string text = summaryText(summary);

@@ -1,6 +1,7 @@
 // The program's version and the git revision it was built from, written at build time into a
-// generated revision.cpp (app/write_revision.cmake) that only the `verity` target compiles, so
-// that a new commit rebuilds that one file and relinks the program, nothing else.
+// generated revision.cpp (app/write_revision.cmake), the whole of the small library
+// verity_version: a new commit recompiles that one file and relinks what links it (the
+// program and the studies, whose records name the revision), nothing else.
 #pragma once
 
 namespace verity {
