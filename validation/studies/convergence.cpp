@@ -49,13 +49,15 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
 
   // The study renders at the reference's resolution unless told otherwise (and then the
   // comparison reports the mismatch).
-  const SceneFile file =
-      loadSceneAtWidth(config.scene, config.resolution > 0 ? config.resolution : reference.width);
+  const SceneFile file = loadScene(
+      config.scene,
+      SceneOverrides::atWidth(config.resolution > 0 ? config.resolution : reference.width));
   const std::vector<StudySampler> samplers = prepareSamplers(file, config.samplers, "--sampler");
   std::vector<PreparedIntegrator> integrators =
       prepareIntegrators(file, config.integrators, config.maxBounces);
   const Vector2i resolution = file.scene->camera().resolution();
-  checkReferenceMatches(referencePath, reference, config.scene, resolution, config.force, log);
+  checkReferenceMatches(referencePath, reference, config.scene, resolution, config.resolution > 0,
+                        config.force, log);
 
   const MachineInfo machine = machineInfo();
   const std::string revision = sourceRevision();
@@ -87,7 +89,7 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
             runs.push_back(
                 {header, [&, ti, run, budget, &p = p, &s = s](nlohmann::json& record) {
                    const uint64_t seed =
-                       runSeed(p.settings.type, s.type, config.budgetType, budget, run);
+                       runSeed(p.settings.type->name, s.type, config.budgetType, budget, run);
                    Film film(resolution);
                    const bool byTime = config.budgetType == "time";
                    const TimedRender timed =
@@ -119,8 +121,8 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
                    if (config.errorImages && ti == 0 && run == 0 && budget == largestBudget) {
                      std::filesystem::create_directories(imageDir);
                      const std::filesystem::path npy =
-                         imageDir / fmt::format("{}_{}_{}_{}{}.npy", sceneName, p.settings.type,
-                                                s.type, budget,
+                         imageDir / fmt::format("{}_{}_{}_{}{}.npy", sceneName,
+                                                p.settings.type->name, s.type, budget,
                                                 config.budgetType == "spp" ? "spp" : "s");
                      writeHalfNpy(npy, relativeErrorImage(film, reference),
                                   {size_t(film.height()), size_t(film.width())});
@@ -133,8 +135,8 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
                    return fmt::format(
                        "{} {} threads={} {}={} run={}: {} spp, {:.3f} s wall, {:.3f} s "
                        "CPU, relMSE {:.4g}",
-                       p.settings.type, s.type, threadCounts[ti], config.budgetType, budget, run,
-                       timed.stats.passes, timed.wallSeconds, timed.cpuSeconds, error.relMse);
+                       p.settings.type->name, s.type, threadCounts[ti], config.budgetType, budget,
+                       run, timed.stats.passes, timed.wallSeconds, timed.cpuSeconds, error.relMse);
                  }});
           }
   return executeRuns(group, *std::max_element(threadCounts.begin(), threadCounts.end()), output,

@@ -20,7 +20,10 @@ std::string shippedSceneName(const std::filesystem::path& file) {
 }
 
 IntegratorSettings studyIntegrator(const SceneFile& file, const std::string& type, int maxBounces) {
-  return overrideIntegrator(file.integrator, type, maxBounces, "--integrator");
+  IntegratorOverrides overrides;
+  if (!type.empty()) overrides.type = &integratorTypeNamed(type, "--integrator");
+  overrides.maxBounces = maxBounces;
+  return overrideIntegrator(file.integrator, overrides);
 }
 
 }  // namespace verity::studies
