@@ -19,15 +19,19 @@
 
 namespace {
 
-// An error ends the whole job under MPI: the other ranks would wait for this one forever.
-int fail(const verity::ProcessGroup& group, const std::string& message) {
+void printError(const verity::ProcessGroup& group, const std::string& message) {
   if (group.distributed())
     fmt::print(stderr, "verity: error (rank {} of {} on {}): {}\n", group.rank(), group.size(),
                group.hostName(), message);
   else
     fmt::print(stderr, "verity: error: {}\n", message);
-  if (group.distributed()) group.abort(1);
-  return 1;
+}
+
+// An error ends the whole job under MPI: the other ranks would wait for this one forever.
+int fail(const verity::ProcessGroup& group, const std::string& message, int status) {
+  printError(group, message);
+  if (group.distributed()) group.abort(status);
+  return status;
 }
 
 }  // namespace
@@ -41,6 +45,10 @@ int main(int argc, char** argv) {
   // Every command's --help shows its options' defaults; commands inherit this.
   app.option_defaults()->always_capture_default();
   app.require_subcommand(1);
+  // CLI11's own errors (an unknown option, a missing value) read like every other error.
+  app.failure_message([](const CLI::App* command, const CLI::Error& e) {
+    return "verity: error: " + CLI::FailureMessage::simple(command, e);
+  });
   // Each command declares where it is added whether it splits its work over MPI ranks.
   verity::addRenderCommand(app, group);
   verity::addBenchCommand(app, group);
@@ -61,11 +69,11 @@ int main(int argc, char** argv) {
     if (code != 0 && group.distributed()) group.abort(code);
     return code;
   } catch (const verity::VerityError& e) {
-    return fail(group, e.what());
+    return fail(group, e.what(), verity::kBadInputStatus);
   } catch (const std::bad_alloc&) {
-    return fail(group, "out of memory (the scene or image is too large)");
+    return fail(group, "out of memory (the scene or image is too large)", verity::kFailureStatus);
   } catch (const std::exception& e) {
-    return fail(group, e.what());
+    return fail(group, e.what(), verity::kFailureStatus);
   }
   return 0;
 }

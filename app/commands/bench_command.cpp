@@ -202,16 +202,14 @@ int runEfficiency(const SceneFile& file, const BenchArgs& args) {
   std::vector<Measured> measured;
   for (const std::string& name : args.integrators) {
     const IntegratorSettings settings = studies::studyIntegrator(file, name, args.maxBounces);
-    if (!args.rrDepths.empty() && !declaresKey(*findIntegratorType(settings.type), "rr_depth"))
-      throw VerityError("", "--rr-depth",
-                        "the integrator \"" + settings.type + "\" has no Russian roulette");
     const std::vector<int> depths =
         args.rrDepths.empty() ? std::vector<int>{settings.rrDepth} : args.rrDepths;
     for (const int depth : depths)
       for (const studies::StudySampler& sampler : samplers) {
         Measured m;
-        m.settings = settings;
-        m.settings.rrDepth = depth;
+        IntegratorOverrides roulette;  // --rr-depth, checked against the integrator
+        roulette.rrDepth = args.rrDepths.empty() ? 0 : depth;
+        m.settings = overrideIntegrator(settings, roulette);
         m.label = name;
         if (!args.rrDepths.empty()) m.label += fmt::format(" rr_depth {}", depth);
         if (!args.samplers.empty()) m.label += " " + sampler.type;
@@ -233,7 +231,7 @@ int runEfficiency(const SceneFile& file, const BenchArgs& args) {
       Film film(resolution);
       film.trackMaxima();
       const uint64_t seed =
-          studies::runSeed(m.settings.type, m.sampler->type, "bench", args.spp, r);
+          studies::runSeed(m.settings.type->name, m.sampler->type, "bench", args.spp, r);
       const studies::TimedRender t = studies::timedRender(
           file, *m.sampler->prototype, *m.integrator, film, args.spp, args.threads, seed);
       m.seconds.push_back(t.wallSeconds);
@@ -275,7 +273,7 @@ int runEfficiency(const SceneFile& file, const BenchArgs& args) {
 int run(const BenchArgs& args) {
   // The camera's own resolution changes (aspect kept), so the image is the whole picture
   // and splats land where they belong.
-  SceneFile file = loadSceneAtWidth(args.scene, args.resolution);
+  SceneFile file = loadScene(args.scene, SceneOverrides::atWidth(args.resolution));
   if (!args.reference.empty() && args.bdpt)
     throw VerityError("", "--reference", "--reference and --bdpt are separate measurements");
   if (!args.rrDepths.empty() && args.reference.empty())

@@ -61,10 +61,19 @@ void printResult(const chi2::TestResult& r) {
       r.chiSquare.pValue, r.significance, chi2::declaredTestCount(), chi2::kFamilySignificance);
 }
 
+// The material --material describes; its errors name the option and the JSON path in it.
+std::shared_ptr<const Material> materialOption(const std::string& json) {
+  try {
+    return chi2::suite::makeMaterial(json);
+  } catch (const VerityError& e) {
+    throw VerityError("--material", e.jsonPath(), e.problem());
+  }
+}
+
 int runOne(const Chi2Args& a) {
   chi2::BsdfSetup s;
   s.name = a.material;
-  s.material = chi2::suite::makeMaterial(a.material);
+  s.material = materialOption(a.material);
   s.normal = parseVector(a.normal);
   s.wi = chi2::incidentDirection(a.incoming, a.inside);
   s.resolution = chi2::suite::kSphereResolution;

@@ -20,20 +20,21 @@ constexpr double kMaxBytes = 8.0 * (1 << 30);
 }  // namespace
 
 std::unique_ptr<ComponentImages> makeComponentImages(const std::string& option,
-                                                     const std::string& integrator, int maxBounces,
+                                                     const IntegratorSettings& integrator,
                                                      const Vector2i& resolution,
                                                      const std::filesystem::path& dir) {
   const bool strategies = option == "--strategies";
-  const IntegratorType* type = findIntegratorType(integrator);
-  if (strategies && !(type && type->hasStrategies))
+  const IntegratorType& type = *integrator.type;
+  const int maxBounces = integrator.maxBounces;
+  if (strategies && !type.hasStrategies)
     throw VerityError(
         "", option,
-        "per-strategy images need --integrator bdpt (the integrator is \"" + integrator + "\")");
-  if (!strategies && !(type && type->readsMaxBounces))
+        "per-strategy images need --integrator bdpt (the integrator is \"" + type.name + "\")");
+  if (!strategies && !type.readsMaxBounces)
     throw VerityError("", option,
                       "per-path-length images need a path tracer, bdpt or light_tracer (the "
                       "integrator is \"" +
-                          integrator + "\")");
+                          type.name + "\")");
   const auto kind =
       strategies ? ComponentLayout::Kind::Strategies : ComponentLayout::Kind::PathLengths;
   const uint64_t images = ComponentLayout::sizeFor(kind, maxBounces);

@@ -7,15 +7,16 @@
 #include <memory>
 #include <string>
 
+#include "integrators/integrator_settings.h"
 #include "render/component_images.h"
 
 namespace verity {
 
 // The images to record for `option` ("--strategies" or "--path-lengths") with `integrator`
-// at `resolution`; a clear error for an integrator that cannot produce them, a directory
-// that cannot be written, or more images than fit in memory.
+// (its type and max bounces) at `resolution`; a clear error for an integrator that cannot produce
+// them, a directory that cannot be written, or more images than fit in memory.
 std::unique_ptr<ComponentImages> makeComponentImages(const std::string& option,
-                                                     const std::string& integrator, int maxBounces,
+                                                     const IntegratorSettings& integrator,
                                                      const Vector2i& resolution,
                                                      const std::filesystem::path& dir);
 

@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 
+#include "cli/exit_status.h"
 #include "cli/number_options.h"
 #include "cli/output_paths.h"
 #include "cli/seed_option.h"
@@ -15,10 +16,9 @@
 #include "integrators/integrator_registry.h"
 #include "integrators/integrator_settings.h"
 #include "integrators/strategy_explanation.h"
-#include "loader/scene_at_width.h"
+#include "loader/scene_loader.h"
 #include "render/interrupt.h"
 #include "render/renderer.h"
-#include "sampling/sampler.h"
 #include "sampling/sampler_registry.h"
 
 namespace verity {
@@ -60,8 +60,36 @@ void writeImage(const std::filesystem::path& out, const ImageChannels& image) {
   std::filesystem::rename(writing, out);
 }
 
-int run(const RenderArgs& args, const ProcessGroup& group) {
-  SceneFile file = loadSceneAtWidth(args.scene, args.resolution);
+// The command line's changes to the scene, applied as it is loaded.
+SceneOverrides sceneOverrides(const RenderArgs& args) {
+  SceneOverrides overrides;
+  overrides.width = args.resolution;
+  if (!args.integrator.empty())
+    overrides.integrator.type = &integratorTypeNamed(args.integrator, "--integrator");
+  overrides.integrator.maxBounces = args.maxBounces;
+  overrides.integrator.rrDepth = args.rrDepth;
+  overrides.sampler = args.sampler;
+  return overrides;
+}
+
+// The images to write: -o, else <scene name>.exr and .png here.
+std::vector<std::filesystem::path> outputPaths(const RenderArgs& args) {
+  if (args.output.empty()) {
+    const std::string name = std::filesystem::path(args.scene).stem().string();
+    return {name + ".exr", name + ".png"};
+  }
+  const std::string ext = lowerExtension(args.output);
+  if (ext != ".exr" && ext != ".png")
+    throw VerityError("", "-o", "the output must end in .exr or .png: \"" + args.output + "\"");
+  if (args.variance && ext == ".png")
+    throw VerityError("", "--variance",
+                      "the variance channels need an EXR output; a PNG holds only colour (\"" +
+                          args.output + "\")");
+  return {args.output};
+}
+
+// Prints the loader's warnings; with --strict they are an error.
+void reportWarnings(const SceneFile& file, const RenderArgs& args, const ProcessGroup& group) {
   if (group.isRoot())
     for (const VerityError& warning : file.warnings)
       fmt::print(stderr, "verity: warning: {}\n", warning.what());
@@ -69,89 +97,58 @@ int run(const RenderArgs& args, const ProcessGroup& group) {
     throw VerityError(
         args.scene, "",
         fmt::format("{} warning(s), and --strict makes them errors", file.warnings.size()));
-  IntegratorSettings settings =
-      overrideIntegrator(file.integrator, args.integrator, args.maxBounces, "--integrator");
-  if (args.rrDepth > 0) {
-    if (!declaresKey(*findIntegratorType(settings.type), "rr_depth"))
-      throw VerityError("", "--rr-depth",
-                        "the integrator \"" + settings.type + "\" has no Russian roulette");
-    settings.rrDepth = args.rrDepth;
-  }
-  if (args.explain) {
-    if (!group.isRoot()) return 0;
-    fmt::print("{}", file.scene->summary().explain());
-    fmt::print("integrator: {} (max_bounces {})\n", settings.type, settings.maxBounces);
-    if (const IntegratorType* type = findIntegratorType(settings.type))
-      fmt::print("{}", explainStrategies(*type, file.scene->summary()));
-    return 0;
-  }
+}
 
-  std::vector<std::filesystem::path> outputs;
-  if (args.output.empty()) {
-    outputs = {file.name + ".exr", file.name + ".png"};
-  } else {
-    const std::string ext = lowerExtension(args.output);
-    if (ext != ".exr" && ext != ".png")
-      throw VerityError("", "-o", "the output must end in .exr or .png: \"" + args.output + "\"");
-    if (args.variance && ext == ".png")
-      throw VerityError("", "--variance",
-                        "the variance channels need an EXR output; a PNG holds only colour (\"" +
-                            args.output + "\")");
-    outputs = {args.output};
-  }
+// --variance estimates each pixel's variance from the spread of its samples, which only
+// independent samples allow.
+void requireVarianceSamples(const SceneFile& file, const RenderArgs& args) {
+  if (!args.variance || file.sampler->samplesAreIndependent()) return;
+  const bool given = !args.sampler.empty();
+  throw VerityError(given ? "" : args.scene, given ? "--sampler" : "sampler.type",
+                    "the variance channels (--variance) estimate a variance from the spread of "
+                    "each pixel's samples, which only independent samples allow; this sampler "
+                    "correlates them (use the independent sampler)");
+}
 
-  if (!args.sampler.empty()) {
-    std::unique_ptr<Sampler> sampler = makeSampler(args.sampler, "--sampler");
-    sampler->setSamplesPerPixel(file.sampler->samplesPerPixel());
-    if (args.variance && !sampler->samplesAreIndependent())
-      throw VerityError("", "--sampler",
-                        "the variance channels (--variance) estimate a variance from the "
-                        "spread of each pixel's samples, which only independent samples allow; "
-                        "sampler \"" +
-                            args.sampler + "\" correlates them");
-    file.sampler = std::move(sampler);
-  }
-  if (args.variance)
-    requireIndependentSamples(*file.sampler, args.scene, "the variance channels (--variance)");
-  if (group.isRoot())
-    for (const auto& out : outputs) prepareOutputFile(out, "-o");
+void explain(const SceneFile& file) {
+  const IntegratorSettings& settings = file.integrator;
+  fmt::print("{}", file.scene->summary().explain());
+  fmt::print("integrator: {} (max_bounces {})\n", settings.type->name, settings.maxBounces);
+  fmt::print("{}", explainStrategies(*settings.type, file.scene->summary()));
+}
 
-  const Vector2i& resolution = file.scene->camera().resolution();
-  const bool splitsStrategies = !args.strategies.empty();
-  const std::string componentOption = splitsStrategies ? "--strategies" : "--path-lengths";
-  const std::filesystem::path componentDir = splitsStrategies ? args.strategies : args.pathLengths;
-  std::unique_ptr<ComponentImages> components;
-  if (!componentDir.empty() && group.distributed())
-    throw VerityError("", componentOption,
+// The per-strategy or per-path-length images --strategies or --path-lengths asks for, or null.
+struct ComponentRequest {
+  std::string option;
+  std::filesystem::path dir;
+};
+
+ComponentRequest componentRequest(const RenderArgs& args) {
+  if (!args.strategies.empty()) return {"--strategies", args.strategies};
+  if (!args.pathLengths.empty()) return {"--path-lengths", args.pathLengths};
+  return {};
+}
+
+std::unique_ptr<ComponentImages> componentImages(const ComponentRequest& request,
+                                                 const SceneFile& file, const ProcessGroup& group) {
+  if (request.dir.empty()) return nullptr;
+  if (group.distributed())
+    throw VerityError("", request.option,
                       fmt::format("component images are rendered by one process; run without "
                                   "mpirun (this job has {} ranks)",
                                   group.size()));
-  if (!componentDir.empty())
-    components = makeComponentImages(componentOption, settings.type, settings.maxBounces,
-                                     resolution, componentDir);
+  return makeComponentImages(request.option, file.integrator, file.scene->camera().resolution(),
+                             request.dir);
+}
 
-  const auto integrator = makeIntegrator(settings);
-  Film film(resolution);
-  RenderOptions options;
-  options.components = components.get();
-  options.samplesPerPixel = args.spp > 0 ? args.spp : file.sampler->samplesPerPixel();
-  options.threads = group.threadsPerRank(args.threads);
-  options.progress = group.isRoot() && isatty(STDERR_FILENO);
-  InterruptGuard interrupt(/*alsoTerminate=*/group.distributed());
-  options.cancel = &InterruptGuard::flag();
-  file.sampler->setSeed(args.seed);
-
-  const RenderStats stats =
-      renderDistributed(group, *file.scene, *integrator, *file.sampler, film, options);
-  if (!group.isRoot()) return 0;
-  // A hidden hook for the MPI tests: the film's bits, which the image rounds to float.
-  if (std::getenv("VERITY_TEST_FILM_DIGEST"))
-    fmt::print(stderr, "verity: film digest {:016x}\n", film.digest());
-
+// The image's channels and the attributes that record how it was made.
+ImageChannels renderedImage(const Film& film, const RenderArgs& args, const SceneFile& file,
+                            const RenderStats& stats, const RenderOptions& options,
+                            const ProcessGroup& group) {
   ImageChannels image = filmChannels(film, args.variance);
   image.attributes["verity:scene"] = args.scene;
-  image.attributes["verity:integrator"] = settings.type;
-  image.attributes["verity:max_bounces"] = std::to_string(settings.maxBounces);
+  image.attributes["verity:integrator"] = file.integrator.type->name;
+  image.attributes["verity:max_bounces"] = std::to_string(file.integrator.maxBounces);
   image.attributes["verity:spp"] = std::to_string(stats.passes);
   image.attributes["verity:seed"] = std::to_string(args.seed);
   if (group.distributed())
@@ -161,18 +158,16 @@ int run(const RenderArgs& args, const ProcessGroup& group) {
   if (stats.interrupted)
     image.attributes["verity:partial"] = fmt::format("interrupted after {} of {} samples per pixel",
                                                      stats.passes, options.samplesPerPixel);
-  for (const auto& out : outputs) writeImage(out, image);
-  if (components) {
-    const RenderRecord record{args.scene,   settings.type, settings.maxBounces,
-                              stats.passes, args.seed,     stats.interrupted};
-    writeComponentImages(componentDir, *components, record, image.attributes);
-  }
+  return image;
+}
 
+void printStats(const SceneFile& file, const RenderStats& stats, const RenderOptions& options,
+                const ProcessGroup& group) {
   const double seconds = std::max(stats.seconds, 1e-9);
   fmt::print(stderr,
              "{}: {} spp, {}, {:.2f} s, {:.3g} samples/s, {:.3g} Mrays/s, {} invalid samples{}{}\n",
-             file.name, stats.passes, settings.type, stats.seconds, stats.samples / seconds,
-             stats.rays / seconds / 1e6, stats.invalidSamples,
+             file.name, stats.passes, file.integrator.type->name, stats.seconds,
+             stats.samples / seconds, stats.rays / seconds / 1e6, stats.invalidSamples,
              stats.invalidSamples ? " (excluded from the average)" : "",
              group.distributed() ? fmt::format(", {} ranks × {} thread{}", group.size(),
                                                options.threads, options.threads == 1 ? "" : "s")
@@ -181,18 +176,58 @@ int run(const RenderArgs& args, const ProcessGroup& group) {
     fmt::print(stderr,
                "the scene has no emitter and a black background: the image is black and "
                "no ray was traced\n");
+}
+
+int run(const RenderArgs& args, const ProcessGroup& group) {
+  const std::vector<std::filesystem::path> outputs = outputPaths(args);
+  SceneFile file = loadScene(args.scene, sceneOverrides(args));
+  reportWarnings(file, args, group);
+  if (args.explain) {
+    if (group.isRoot()) explain(file);
+    return 0;
+  }
+  requireVarianceSamples(file, args);
+  if (group.isRoot())
+    for (const auto& out : outputs) prepareOutputFile(out, "-o");
+  const ComponentRequest request = componentRequest(args);
+  const std::unique_ptr<ComponentImages> components = componentImages(request, file, group);
+
+  const auto integrator = makeIntegrator(file.integrator);
+  Film film(file.scene->camera().resolution());
+  RenderOptions options;
+  options.components = components.get();
+  options.samplesPerPixel = args.spp > 0 ? args.spp : file.sampler->samplesPerPixel();
+  options.threads = group.threadsPerRank(args.threads);
+  options.progress = group.isRoot() && isatty(STDERR_FILENO);
+  InterruptGuard interrupt(/*alsoTerminate=*/group.distributed());
+  options.cancel = &InterruptGuard::flag();
+  file.sampler->setSeed(args.seed);
+  const RenderStats stats =
+      renderDistributed(group, *file.scene, *integrator, *file.sampler, film, options);
+  if (!group.isRoot()) return 0;
+  // A hidden hook for the MPI tests: the film's bits, which the image rounds to float.
+  if (std::getenv("VERITY_TEST_FILM_DIGEST"))
+    fmt::print(stderr, "verity: film digest {:016x}\n", film.digest());
+
+  const ImageChannels image = renderedImage(film, args, file, stats, options, group);
+  for (const auto& out : outputs) writeImage(out, image);
+  if (components) {
+    const RenderRecord record{
+        args.scene, file.integrator.type->name, file.integrator.maxBounces, stats.passes,
+        args.seed,  stats.interrupted};
+    writeComponentImages(request.dir, *components, record, image.attributes);
+  }
+  printStats(file, stats, options, group);
   for (const auto& out : outputs) fmt::print(stderr, "wrote {}\n", out.string());
   if (components)
     fmt::print(stderr, "wrote {} images and manifest.json to {}\n", components->layout().size(),
-               componentDir.string());
-  if (stats.interrupted) {
-    fmt::print(stderr,
-               "interrupted: the image is PARTIAL, {} of {} samples per pixel (every pixel has "
-               "the same count)\n",
-               stats.passes, options.samplesPerPixel);
-    return 130;
-  }
-  return 0;
+               request.dir.string());
+  if (!stats.interrupted) return 0;
+  fmt::print(stderr,
+             "interrupted: the image is PARTIAL, {} of {} samples per pixel (every pixel has "
+             "the same count)\n",
+             stats.passes, options.samplesPerPixel);
+  return kInterruptedStatus;
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/exit_status.h"
 #include "cli/output_paths.h"
 #include "cli/subcommand.h"
 #include "validation/studies/report.h"
@@ -34,7 +35,7 @@ void addReportCommand(CLI::App& app, const ProcessGroup& group) {
     const int status = studies::makeReport(inputs, args->output);
     if (status != 0) {
       fmt::print(stderr, "verity: error: the report script failed (exit status {})\n", status);
-      throw CLI::RuntimeError(1);
+      throw CLI::RuntimeError(kFailureStatus);
     }
     fmt::print(stderr, "wrote {}/index.html and summary.md\n", args->output);
   });

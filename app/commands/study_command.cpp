@@ -96,8 +96,7 @@ void addConvergence(CLI::App& study, const ProcessGroup& group) {
   cmd->add_flag("--force", config->force,
                 "Use a reference that records another scene (a warning instead of an error)");
   cmd->callback([=, &group] {
-    if (budgets.values().empty())
-      throw CLI::ValidationError("convergence", "give budgets with either --spp or --time");
+    if (budgets.values().empty()) throw CLI::RequiredError("--spp or --time (the budgets)");
     config->budgetType = budgets.type();
     config->budgets = budgets.values();
     config->output = *output;

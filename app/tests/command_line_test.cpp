@@ -87,7 +87,7 @@ TEST_F(CommandLine, VarianceChannelsNeedIndependentSamples) {
     const std::string out = (dir_ / (std::string(sampler) + ".exr")).string();
     const testing::Outcome refused =
         verity({"render", scene.string(), "--spp", "4", "--variance", "-o", out});
-    EXPECT_EQ(refused.status, 1) << sampler << "\n" << refused.stderrText;
+    EXPECT_EQ(refused.status, 2) << sampler << "\n" << refused.stderrText;
     EXPECT_NE(refused.stderrText.find("sampler.type"), std::string::npos) << refused.stderrText;
     EXPECT_NE(refused.stderrText.find("independent"), std::string::npos) << refused.stderrText;
     EXPECT_FALSE(std::filesystem::exists(out));
@@ -112,11 +112,11 @@ TEST_F(CommandLine, RenderWithAnotherSampler) {
   EXPECT_EQ(readExr(dir_ / "scene.exr").planes, readExr(dir_ / "independent.exr").planes);
   EXPECT_NE(readExr(dir_ / "scene.exr").planes, readExr(dir_ / "sobol.exr").planes);
   const testing::Outcome unknown = render({"--sampler", "sobolev"}, "x.exr");
-  EXPECT_EQ(unknown.status, 1);
+  EXPECT_EQ(unknown.status, 2);
   EXPECT_NE(unknown.stderrText.find("--sampler: unknown sampler \"sobolev\""), std::string::npos)
       << unknown.stderrText;
   const testing::Outcome variance = render({"--sampler", "halton", "--variance"}, "y.exr");
-  EXPECT_EQ(variance.status, 1);
+  EXPECT_EQ(variance.status, 2);
   EXPECT_NE(variance.stderrText.find("--sampler: the variance channels"), std::string::npos)
       << variance.stderrText;
   EXPECT_FALSE(std::filesystem::exists(dir_ / "y.exr"));
@@ -137,7 +137,7 @@ TEST_F(CommandLine, RouletteDepthOverride) {
   EXPECT_EQ(readExr(dir_ / "scene.exr").planes, readExr(dir_ / "three.exr").planes);
   EXPECT_NE(readExr(dir_ / "scene.exr").planes, readExr(dir_ / "one.exr").planes);
   const testing::Outcome refused = render({"--integrator", "normals", "--rr-depth", "2"}, "n.exr");
-  EXPECT_EQ(refused.status, 1);
+  EXPECT_EQ(refused.status, 2);
   EXPECT_NE(refused.stderrText.find("--rr-depth: the integrator \"normals\" has no Russian "
                                     "roulette"),
             std::string::npos)

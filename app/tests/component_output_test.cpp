@@ -95,7 +95,7 @@ TEST_F(ComponentOutput, PathLengthsOfThePathTracerAddUp) {
 TEST_F(ComponentOutput, StrategiesNeedBdpt) {
   const auto outcome =
       render({"--integrator", "path_tracer_nee", "--strategies", (dir_ / "s").string()});
-  EXPECT_EQ(outcome.status, 1);
+  EXPECT_EQ(outcome.status, 2);
   EXPECT_NE(outcome.stderrText.find("--strategies"), std::string::npos) << outcome.stderrText;
   EXPECT_NE(outcome.stderrText.find("bdpt"), std::string::npos) << outcome.stderrText;
   EXPECT_FALSE(std::filesystem::exists(dir_ / "image.exr"));
@@ -103,21 +103,21 @@ TEST_F(ComponentOutput, StrategiesNeedBdpt) {
 
 TEST_F(ComponentOutput, PathLengthsNeedARadianceIntegrator) {
   const auto outcome = render({"--integrator", "ao", "--path-lengths", (dir_ / "k").string()});
-  EXPECT_EQ(outcome.status, 1);
+  EXPECT_EQ(outcome.status, 2);
   EXPECT_NE(outcome.stderrText.find("--path-lengths"), std::string::npos) << outcome.stderrText;
 }
 
 TEST_F(ComponentOutput, UnwritableDirectoryIsAClearError) {
   std::ofstream(dir_ / "file") << "not a directory";
   const auto outcome = render({"--strategies", (dir_ / "file" / "out").string()});
-  EXPECT_EQ(outcome.status, 1);
+  EXPECT_EQ(outcome.status, 2);
   EXPECT_NE(outcome.stderrText.find("cannot write"), std::string::npos) << outcome.stderrText;
   EXPECT_FALSE(std::filesystem::exists(dir_ / "image.exr"));
 }
 
 TEST_F(ComponentOutput, TooManyImagesForMemoryIsAClearError) {
   const auto outcome = render({"--max-bounces", "100000", "--strategies", (dir_ / "s").string()});
-  EXPECT_EQ(outcome.status, 1);
+  EXPECT_EQ(outcome.status, 2);
   EXPECT_NE(outcome.stderrText.find("GiB"), std::string::npos) << outcome.stderrText;
 }
 

@@ -75,11 +75,11 @@ TEST(ErrorCommand, BadImagesAreErrorsNamingTheFile) {
   writeExr(small, one);
   std::string out;
   const testing::Outcome badPixel = errorCommand(dir, ref, {nan}, &out);
-  EXPECT_EQ(badPixel.status, 1);
+  EXPECT_EQ(badPixel.status, 2);
   EXPECT_NE(badPixel.stderrText.find(nan + ": pixel (0, 0) of channel G is nan"), std::string::npos)
       << badPixel.stderrText;
   const testing::Outcome size = errorCommand(dir, ref, {small}, &out);
-  EXPECT_EQ(size.status, 1);
+  EXPECT_EQ(size.status, 2);
   EXPECT_NE(size.stderrText.find(small + ": an image of 1×1 against a reference of 2×1"),
             std::string::npos)
       << size.stderrText;

@@ -38,7 +38,7 @@ TEST_P(MalformedScene, OneLineErrorNamingFileAndPath) {
       std::filesystem::temp_directory_path() / ("malformed_" + GetParam().file + ".png");
   std::filesystem::remove(output);
   const auto outcome = testing::run({VERITY_BINARY, "render", scene, "-o", output.string()});
-  EXPECT_EQ(outcome.status, 1) << outcome.stderrText;
+  EXPECT_EQ(outcome.status, 2) << outcome.stderrText;
   const std::string& err = outcome.stderrText;
   ASSERT_FALSE(err.empty());
   EXPECT_EQ(err.find('\n'), err.size() - 1) << "expected exactly one line:\n" << err;

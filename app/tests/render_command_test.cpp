@@ -75,7 +75,7 @@ TEST_F(RenderCommand, MissingOutputFoldersAreCreated) {
 TEST_F(RenderCommand, OutputInsideAFileFailsBeforeRendering) {
   std::ofstream(dir_ / "file") << "not a directory";
   const auto outcome = render({"-o", (dir_ / "file" / "image.png").string()});
-  EXPECT_EQ(outcome.status, 1);
+  EXPECT_EQ(outcome.status, 2);
   EXPECT_NE(outcome.stderrText.find("-o: cannot create the folder"), std::string::npos)
       << outcome.stderrText;
   // The summary line of a finished render says "spp"; none must have run.
@@ -110,7 +110,7 @@ TEST_F(RenderCommand, EmptyOutputNameIsRefused) {
   const auto outcome = testing::run(
       {"/bin/sh", "-c",
        "cd '" + dir_.string() + "' && '" VERITY_BINARY "' render scene.json --spp 1 -o ''"});
-  EXPECT_EQ(outcome.status, 1);
+  EXPECT_EQ(outcome.status, 2);
   EXPECT_NE(outcome.stderrText.find("-o: the name given is empty"), std::string::npos)
       << outcome.stderrText;
   EXPECT_FALSE(std::filesystem::exists(dir_ / "scene.exr"));
@@ -122,7 +122,7 @@ TEST_F(RenderCommand, EmptyComponentFolderIsRefused) {
   for (const char* option : {"--strategies", "--path-lengths"}) {
     const auto outcome =
         render({"--integrator", "bdpt", option, "", "-o", (dir_ / "image.exr").string()});
-    EXPECT_EQ(outcome.status, 1) << option;
+    EXPECT_EQ(outcome.status, 2) << option;
     EXPECT_NE(outcome.stderrText.find(std::string(option) + ": the name given is empty"),
               std::string::npos)
         << outcome.stderrText;
@@ -132,7 +132,7 @@ TEST_F(RenderCommand, EmptyComponentFolderIsRefused) {
 
 TEST_F(RenderCommand, VarianceOfAPngIsRefused) {
   const auto outcome = render({"--variance", "-o", (dir_ / "image.png").string()});
-  EXPECT_EQ(outcome.status, 1);
+  EXPECT_EQ(outcome.status, 2);
   EXPECT_NE(outcome.stderrText.find("--variance"), std::string::npos) << outcome.stderrText;
   EXPECT_FALSE(std::filesystem::exists(dir_ / "image.png"));
 }

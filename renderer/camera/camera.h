@@ -28,9 +28,7 @@ class Camera {
   Ray generateRay(const Point2f& film, const Point2f& lens) const;
 
   const Vector2i& resolution() const { return resolution_; }
-  bool isPinhole() const { return lensRadius_ == 0; }
   const Transform& toWorld() const { return toWorld_; }
-  Point3f position() const { return toWorld_.point(Point3f::Zero()); }
 
   // Importance for light transport (Veach 1997, §10.2; pbrt-v3 §16.1.1), normalised over the
   // whole image: ∫_lens ∫ We(x, ω) cos θ dω dA(x) = 1. With A the area of the image plane at

@@ -24,12 +24,8 @@ struct Frame {
   Vector3f toLocal(const Vector3f& v) const { return {v.dot(s), v.dot(t), v.dot(n)}; }
   Vector3f toWorld(const Vector3f& v) const { return s * v.x() + t * v.y() + n * v.z(); }
 
-  static float cosTheta(const Vector3f& v) { return v.z(); }
-  static float cos2Theta(const Vector3f& v) { return v.z() * v.z(); }
   static float sin2Theta(const Vector3f& v) { return std::max(0.0f, 1.0f - v.z() * v.z()); }
   static float sinTheta(const Vector3f& v) { return std::sqrt(sin2Theta(v)); }
-  static float tan2Theta(const Vector3f& v) { return sin2Theta(v) / cos2Theta(v); }
-  static float tanTheta(const Vector3f& v) { return sinTheta(v) / cosTheta(v); }
 };
 
 }  // namespace verity

@@ -22,13 +22,14 @@ std::unique_ptr<Integrator> makePathTracer(const IntegratorSettings& s) {
                                       RussianRoulette(s.rrDepth));
 }
 
-// The keys the integrators share. Their defaults are IntegratorSettings' own.
+// The keys the integrators share. Their defaults are IntegratorSettings' own (named
+// constants: the table cannot make settings, whose default type is one of its entries).
 KeyDeclaration maxBouncesKey() {
   return {"max_bounces",
           {"max bounces"},
           ValueType::Integer,
           fmt::format("[0, {}]", kMaxBouncesLimit),
-          std::to_string(IntegratorSettings().maxBounces),
+          std::to_string(kDefaultMaxBounces),
           "the most scattering events on a path: 0 shows only emitters seen directly, 1 adds "
           "direct lighting"};
 }
@@ -38,7 +39,7 @@ KeyDeclaration rrDepthKey() {
           {},
           ValueType::Integer,
           ">= 1",
-          std::to_string(IntegratorSettings().rrDepth),
+          std::to_string(kDefaultRouletteDepth),
           "the non-specular scattering event after which Russian roulette first decides "
           "whether a path goes on (1: after the first; specular events, at mirrors and "
           "smooth glass, are not counted); one more than max_bounces turns the roulette off"};
@@ -86,6 +87,7 @@ std::vector<IntegratorType> makeTable() {
                              "emitter or escape to the background; no shadow rays",
                .estimatesRadiance = true,
                .keys = {maxBouncesKey(), rrDepthKey()},
+               .hasRussianRoulette = true,
                .make = makePathTracer<PathTracer::Strategy::Materials>});
   t.push_back({.name = "path_tracer_nee",
                .description = "path tracing with next-event estimation",
@@ -95,6 +97,7 @@ std::vector<IntegratorType> makeTable() {
                              "after a delta bounce",
                .estimatesRadiance = true,
                .keys = {maxBouncesKey(), rrDepthKey()},
+               .hasRussianRoulette = true,
                .make = makePathTracer<PathTracer::Strategy::NextEvent>});
   t.push_back({.name = "path_tracer_mis",
                .description = "path tracing, material and light samples combined by MIS",
@@ -103,6 +106,7 @@ std::vector<IntegratorType> makeTable() {
                              "heuristic, or power heuristic with \"power\")",
                .estimatesRadiance = true,
                .keys = {maxBouncesKey(), rrDepthKey(), misPowerKey("material and light samples")},
+               .hasRussianRoulette = true,
                .make = makePathTracer<PathTracer::Strategy::Mis>});
   t.push_back({.name = "bdpt",
                .description = "bidirectional path tracing, MIS over every strategy (s, t)",
@@ -112,6 +116,7 @@ std::vector<IntegratorType> makeTable() {
                              "splatted",
                .estimatesRadiance = true,
                .keys = {maxBouncesKey(), rrDepthKey(), misPowerKey("the strategies (s, t)")},
+               .hasRussianRoulette = true,
                .hasStrategies = true,
                .make = [](const IntegratorSettings& s) -> std::unique_ptr<Integrator> {
                  return std::make_unique<Bdpt>(s.maxBounces, s.misPower, RussianRoulette(s.rrDepth),
@@ -125,6 +130,7 @@ std::vector<IntegratorType> makeTable() {
                              "smooth glass",
                .estimatesRadiance = true,
                .keys = {maxBouncesKey(), rrDepthKey()},
+               .hasRussianRoulette = true,
                .splatsOnly = true,
                .make = [](const IntegratorSettings& s) -> std::unique_ptr<Integrator> {
                  return std::make_unique<LightTracer>(s.maxBounces, RussianRoulette(s.rrDepth));
@@ -146,7 +152,7 @@ const KeyList& integratorCommonKeys() {
                                 ValueType::String,
                                 "a type's name or other spelling (any letter case; spaces read "
                                 "as _)",
-                                "\"" + IntegratorSettings().type + "\"",
+                                "\"" + defaultIntegratorType().name + "\"",
                                 "the integrator type"}};
   return keys;
 }

@@ -30,6 +30,8 @@ struct IntegratorType {
   KeyList keys;
   // Declares "max_bounces" (set from `keys`): it can split its image by path length.
   bool readsMaxBounces = false;
+  // Ends paths by Russian roulette and so reads "rr_depth" (--rr-depth applies).
+  bool hasRussianRoulette = false;
   bool hasStrategies = false;  // per-(s, t) strategy images (BDPT)
   // Sees only the pixels a light subpath reaches through the lens (t = 1 splats).
   bool splatsOnly = false;

@@ -7,17 +7,37 @@
 
 namespace verity {
 
-IntegratorSettings overrideIntegrator(IntegratorSettings settings, const std::string& type,
-                                      int maxBounces, const std::string& option) {
-  if (!type.empty()) {
-    const IntegratorType* t = findIntegratorType(type);
-    if (!t)
-      throw VerityError(
-          "", option,
-          "unknown integrator type \"" + type + "\" (expected " + integratorTypeList() + ")");
-    settings.type = t->name;
+const IntegratorType& defaultIntegratorType() {
+  static const IntegratorType& type = *findIntegratorType("path_tracer_mats");
+  return type;
+}
+
+const IntegratorType& integratorTypeNamed(const std::string& name, const std::string& option) {
+  const IntegratorType* type = findIntegratorType(name);
+  if (!type)
+    throw VerityError(
+        "", option,
+        "unknown integrator type \"" + name + "\" (expected " + integratorTypeList() + ")");
+  return *type;
+}
+
+IntegratorOverrides integratorOverrides(const std::string& type, int maxBounces) {
+  IntegratorOverrides overrides;
+  if (!type.empty()) overrides.type = &integratorTypeNamed(type, "--integrator");
+  overrides.maxBounces = maxBounces;
+  return overrides;
+}
+
+IntegratorSettings overrideIntegrator(IntegratorSettings settings,
+                                      const IntegratorOverrides& overrides) {
+  if (overrides.type) settings.type = overrides.type;
+  if (overrides.maxBounces >= 0) settings.maxBounces = overrides.maxBounces;
+  if (overrides.rrDepth > 0) {
+    if (!settings.type->hasRussianRoulette)
+      throw VerityError("", "--rr-depth",
+                        "the integrator \"" + settings.type->name + "\" has no Russian roulette");
+    settings.rrDepth = overrides.rrDepth;
   }
-  if (maxBounces >= 0) settings.maxBounces = maxBounces;
   return settings;
 }
 
@@ -30,7 +50,7 @@ IntegratorSettings parseIntegratorSettings(const JsonNode* node) {
   if (!type)
     (*node)[{"type"}].fail("unknown integrator type \"" + given + "\" (expected " +
                            integratorTypeList() + ")");
-  s.type = type->name;
+  s.type = type;
   node->declare({"integrator " + type->name, {&integratorCommonKeys(), &type->keys}});
   // Each key is read only by the types that declare it: another type's key is unknown.
   if (declaresKey(*type, "max_bounces"))
@@ -46,10 +66,8 @@ IntegratorSettings parseIntegratorSettings(const JsonNode* node) {
 }
 
 std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s) {
-  const IntegratorType* type = findIntegratorType(s.type);
-  // Settings come from parseIntegratorSettings or a command's check of the name.
-  if (!type) throw std::logic_error("no integrator type \"" + s.type + "\"");
-  return type->make(s);
+  if (!s.type) throw std::logic_error("integrator settings without a type");
+  return s.type->make(s);
 }
 
 }  // namespace verity

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "integrators/bdpt.h"
+#include "integrators/integrator_registry.h"
 #include "integrators/russian_roulette.h"
 #include "params/json_node.h"
 
@@ -16,10 +17,14 @@ namespace verity {
 // The largest max_bounces a scene or a command line may ask for (paths end by roulette long
 // before; the limit keeps vertex counts such as max_bounces + 2 far from overflow).
 inline constexpr int kMaxBouncesLimit = 1 << 20;
+inline constexpr int kDefaultMaxBounces = 64;
+
+// The integrator a scene gets when it names none.
+const IntegratorType& defaultIntegratorType();
 
 struct IntegratorSettings {
-  std::string type = "path_tracer_mats";
-  int maxBounces = 64;
+  const IntegratorType* type = &defaultIntegratorType();  // an entry of integratorTypes()
+  int maxBounces = kDefaultMaxBounces;
   float misPower = 1;  // 1: balance heuristic, 2: power heuristic
   // "rr_depth": the scattering event after which Russian roulette first decides whether a path
   // goes on (1: after the first); one larger than max_bounces turns the roulette off.
@@ -29,11 +34,21 @@ struct IntegratorSettings {
   BdptStrategy bdptDroppedStrategy;
 };
 
-// `settings` with the type (any accepted spelling; "" keeps it) and max bounces (if ≥ 0)
-// overridden, as a command line asks; an unknown type is an error naming `option` and the
-// known types.
-IntegratorSettings overrideIntegrator(IntegratorSettings settings, const std::string& type,
-                                      int maxBounces, const std::string& option);
+// The type spelled `name` (any accepted spelling); an unknown name is an error naming `option`
+// and the known types.
+const IntegratorType& integratorTypeNamed(const std::string& name, const std::string& option);
+// What a command line changes in the scene's settings; each field at its default keeps the
+// scene's value.
+struct IntegratorOverrides {
+  const IntegratorType* type = nullptr;
+  int maxBounces = -1;
+  int rrDepth = 0;  // an error (naming --rr-depth) for a type without Russian roulette
+};
+// The overrides of `--integrator type` (empty: the scene's) and `--max-bounces` (negative:
+// the scene's).
+IntegratorOverrides integratorOverrides(const std::string& type, int maxBounces);
+IntegratorSettings overrideIntegrator(IntegratorSettings settings,
+                                      const IntegratorOverrides& overrides);
 // Reads the scene's "integrator" object (null: the defaults).
 IntegratorSettings parseIntegratorSettings(const JsonNode* node);
 std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& settings);

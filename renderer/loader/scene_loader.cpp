@@ -1,5 +1,10 @@
 #include "loader/scene_loader.h"
 
+#include <fmt/format.h>
+
+#include <cmath>
+#include <functional>
+
 #include "lights/background_registry.h"
 #include "loader/scene_keys.h"
 #include "materials/material_factory.h"
@@ -13,6 +18,7 @@ namespace {
 
 // The most pixels an image may have (8192²): the film keeps several channels per pixel.
 constexpr int64_t kMaxPixels = int64_t{1} << 26;
+constexpr int kMaxImageSide = 1 << 15;
 
 const std::string kExtentProblem =
     "lies outside the supported extent: every coordinate must be within ±1e15";
@@ -21,7 +27,28 @@ bool withinExtent(const Point3f& p) {
   return p.cwiseAbs().maxCoeff() <= kMaxSceneCoordinate;  // false for NaN too
 }
 
-std::unique_ptr<Camera> parseCamera(const JsonNode& node) {
+void checkPixelCount(const Vector2i& resolution, const std::function<void(std::string)>& fail) {
+  if (int64_t{resolution.x()} * resolution.y() > kMaxPixels)
+    fail(fmt::format("the image must have at most 8192 × 8192 pixels in all, not {} × {}",
+                     resolution.x(), resolution.y()));
+}
+
+// The resolution `width` pixels wide with the aspect ratio of `resolution`.
+Vector2i resolutionAtWidth(const Vector2i& resolution, int width) {
+  const int height =
+      std::max(1, int(std::lround(double(width) * resolution.y() / std::max(resolution.x(), 1))));
+  const Vector2i result(width, height);
+  const auto fail = [](const std::string& problem) {
+    throw VerityError("", "--resolution", problem);
+  };
+  if (width > kMaxImageSide || height > kMaxImageSide)
+    fail(fmt::format("{} pixels wide makes a {} × {} image: each side must be at most {}", width,
+                     width, height, kMaxImageSide));
+  checkPixelCount(result, fail);
+  return result;
+}
+
+std::unique_ptr<Camera> parseCamera(const JsonNode& node, int width) {
   if (!node.isObject()) node.fail("expected a camera object");
   node.declare({"the camera", {&cameraKeys()}});
   const Transform toWorld = parseOptionalTransform(node);
@@ -33,10 +60,10 @@ std::unique_ptr<Camera> parseCamera(const JsonNode& node) {
         "a camera's transform must scale uniformly (no shear or non-uniform scale)");
   Vector2i resolution(512, 512);
   if (auto r = node.find({"resolution"})) {
-    resolution = r->asVector2i(1, 1 << 15);
-    if (int64_t{resolution.x()} * resolution.y() > kMaxPixels)
-      r->fail("the image must have at most 8192 × 8192 pixels in all");
+    resolution = r->asVector2i(1, kMaxImageSide);
+    checkPixelCount(resolution, [&](const std::string& problem) { r->fail(problem); });
   }
+  if (width > 0) resolution = resolutionAtWidth(resolution, width);
   const float vfov = node.getFloat({"vfov"}, 90, Range{0, 180, true, true});
   const float fdist = node.getFloat({"fdist"}, 1, Range{0, kMaxSceneCoordinate, true, false});
   const float aperture = node.getFloat({"aperture"}, 0, Range{0, kMaxSceneCoordinate});
@@ -120,7 +147,17 @@ std::unique_ptr<Sampler> parseSampler(const JsonNode& root) {
   return sampler;
 }
 
-SceneFile build(const JsonNode& root, const std::filesystem::path& file) {
+// The file's sampler, or the one --sampler names with the file's sample count.
+std::unique_ptr<Sampler> sceneSampler(const JsonNode& root, const std::string& override) {
+  std::unique_ptr<Sampler> fileSampler = parseSampler(root);
+  if (override.empty()) return fileSampler;
+  std::unique_ptr<Sampler> sampler = makeSampler(override, "--sampler");
+  sampler->setSamplesPerPixel(fileSampler->samplesPerPixel());
+  return sampler;
+}
+
+SceneFile build(const JsonNode& root, const std::filesystem::path& file,
+                const SceneOverrides& overrides) {
   SceneFile result;
   result.name = file.stem().string();
   result.scene = std::make_unique<Scene>();
@@ -129,12 +166,13 @@ SceneFile build(const JsonNode& root, const std::filesystem::path& file) {
   MaterialFactory materials(textures, result.warnings);
   root.declare({"the scene file", {&sceneKeys()}});
 
-  scene.setCamera(parseCamera(root[{"camera"}]));
+  scene.setCamera(parseCamera(root[{"camera"}], overrides.width));
   if (auto bg = root.find({"background"})) scene.setBackground(parseBackground(*bg, textures));
   root.find({"accelerator"});  // DIRT's choice of accelerator: one serves all
   auto integrator = root.find({"integrator"});
-  result.integrator = parseIntegratorSettings(integrator ? &*integrator : nullptr);
-  result.sampler = parseSampler(root);
+  result.integrator = overrideIntegrator(
+      parseIntegratorSettings(integrator ? &*integrator : nullptr), overrides.integrator);
+  result.sampler = sceneSampler(root, overrides.sampler);
 
   if (auto list = root.find({"materials"})) {
     if (!list->isArray()) list->fail("expected an array of materials");
@@ -164,14 +202,15 @@ SceneFile build(const JsonNode& root, const std::filesystem::path& file) {
 
 }  // namespace
 
-SceneFile loadScene(const std::filesystem::path& file) {
+SceneFile loadScene(const std::filesystem::path& file, const SceneOverrides& overrides) {
   if (std::filesystem::is_directory(file))
     throw VerityError(file.string(), "", "is a directory, not a scene file");
-  return build(JsonNode::load(file), file);
+  return build(JsonNode::load(file), file, overrides);
 }
 
-SceneFile loadSceneText(const std::string& text, const std::filesystem::path& file) {
-  return build(JsonNode::parse(text, file), file);
+SceneFile loadSceneText(const std::string& text, const std::filesystem::path& file,
+                        const SceneOverrides& overrides) {
+  return build(JsonNode::parse(text, file), file, overrides);
 }
 
 }  // namespace verity

@@ -284,11 +284,6 @@ int JsonNode::asInt(int lo, int hi) const {
   return static_cast<int>(v);
 }
 
-bool JsonNode::asBool() const {
-  if (!value_->is_boolean()) fail("expected true or false, found " + typeName(*value_));
-  return value_->get<bool>();
-}
-
 std::string JsonNode::asString() const {
   if (!value_->is_string()) fail("expected a string, found " + typeName(*value_));
   return value_->get<std::string>();
@@ -317,11 +312,6 @@ float JsonNode::getFloat(Keys keys, float def, Range range) const {
 int JsonNode::getInt(Keys keys, int def, int lo, int hi) const {
   auto node = find(keys);
   return node ? node->asInt(lo, hi) : def;
-}
-
-bool JsonNode::getBool(Keys keys, bool def) const {
-  auto node = find(keys);
-  return node ? node->asBool() : def;
 }
 
 std::string JsonNode::getString(Keys keys) const {

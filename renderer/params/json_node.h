@@ -28,8 +28,6 @@ struct Range {
 
   static Range any() { return {}; }
   static Range positive() { return {0.0f, kInfinity, true, false}; }
-  static Range nonNegative() { return {0.0f, kInfinity, false, false}; }
-  static Range unit() { return {0.0f, 1.0f, false, false}; }
   bool contains(float v) const;
   std::string describe() const;  // "a number in (0, 100]"
   std::string interval() const;  // "(0, 100]", "> 0", "finite": for key declarations
@@ -64,7 +62,6 @@ class JsonNode {
   // Typed reads of this value.
   float asFloat(Range range = Range::any()) const;
   int asInt(int lo, int hi) const;
-  bool asBool() const;
   std::string asString() const;
   // A number fills all three components; each component must lie in `range`.
   Vector3f asVector3(Range range = Range::any()) const;
@@ -73,7 +70,6 @@ class JsonNode {
   // Typed reads of a member, with a default when absent.
   float getFloat(Keys keys, float def, Range range = Range::any()) const;
   int getInt(Keys keys, int def, int lo, int hi) const;
-  bool getBool(Keys keys, bool def) const;
   std::string getString(Keys keys) const;
   std::string getString(Keys keys, const std::string& def) const;
   Vector3f getVector3(Keys keys, const Vector3f& def) const;

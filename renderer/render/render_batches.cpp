@@ -11,8 +11,8 @@ namespace verity {
 uint64_t renderBatches(const SceneFile& file, const std::string& integrator, int maxBounces,
                        int batches, int spp, const std::string& key,
                        const std::function<void(const Film&)>& onBatch) {
-  const auto render =
-      makeIntegrator(overrideIntegrator(file.integrator, integrator, maxBounces, "--integrator"));
+  const auto render = makeIntegrator(
+      overrideIntegrator(file.integrator, integratorOverrides(integrator, maxBounces)));
   uint64_t invalid = 0;
   for (int batch = 0; batch < batches; ++batch) {
     Film film(file.scene->camera().resolution());

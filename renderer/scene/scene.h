@@ -50,9 +50,6 @@ class Scene {
   const Camera& camera() const { return *camera_; }
   // Null when the background is black (it then emits nothing and is never looked up).
   const EnvironmentLight* background() const { return background_.get(); }
-  Color3 backgroundRadiance(const Vector3f& d) const {
-    return background_ ? background_->radiance(d) : Color3::Zero();
-  }
 
   const std::vector<const Light*>& lights() const { return lights_; }
   // Chooses a light with probability proportional to its power.
@@ -63,7 +60,6 @@ class Scene {
   const Bounds3f& bounds() const { return bounds_; }
   float boundingRadius() const { return radius_; }
   const std::vector<std::unique_ptr<Shape>>& shapes() const { return shapes_; }
-  RTCScene embreeScene() const { return rtcScene_; }
 
  private:
   RTCDevice device_ = nullptr;

@@ -46,7 +46,7 @@ struct Rendered {
 // Renders a loaded scene with `integrator` at the file's sample count and max_bounces.
 Rendered renderFile(SceneFile file, const std::string& integrator, uint64_t seed) {
   IntegratorSettings settings = file.integrator;
-  settings.type = integrator;
+  settings.type = findIntegratorType(integrator);
   const auto render = makeIntegrator(settings);
   Rendered r{Film(file.scene->camera().resolution()), {}};
   RenderOptions options;

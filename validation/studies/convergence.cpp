@@ -60,13 +60,15 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
 
   // The study renders at the reference's resolution unless told otherwise (and then the
   // comparison reports the mismatch).
-  const SceneFile file =
-      loadSceneAtWidth(config.scene, config.resolution > 0 ? config.resolution : reference.width);
+  const SceneFile file = loadScene(
+      config.scene,
+      SceneOverrides::atWidth(config.resolution > 0 ? config.resolution : reference.width));
   const std::vector<StudySampler> samplers = prepareSamplers(file, config.samplers, "--sampler");
   std::vector<PreparedIntegrator> integrators =
       prepareIntegrators(file, config.integrators, config.maxBounces);
   const Vector2i resolution = file.scene->camera().resolution();
-  checkReferenceMatches(referencePath, reference, config.scene, resolution, config.force, log);
+  checkReferenceMatches(referencePath, reference, config.scene, resolution, config.resolution > 0,
+                        config.force, log);
 
   const MachineInfo machine = machineInfo();
   KeyedStudyOutput output(config.output, "convergence", convergenceRunKey);
@@ -96,7 +98,7 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
             });
             runs.push_back(
                 {header, [&, ti, run, budget, &p = p, &s = s](nlohmann::json& record) {
-                   const uint64_t seed = runSeed(p.settings.type, s.type,
+                   const uint64_t seed = runSeed(p.settings.type->name, s.type,
                                                  budgetTypeName(config.budgetType), budget, run);
                    Film film(resolution);
                    const bool byTime = config.budgetType == BudgetType::Time;
@@ -129,8 +131,9 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
                    if (config.errorImages && ti == 0 && run == 0 && budget == largestBudget) {
                      std::filesystem::create_directories(imageDir);
                      const std::filesystem::path npy =
-                         imageDir / fmt::format("{}_{}_{}_{}{}.npy", sceneName, p.settings.type,
-                                                s.type, budget, budgetUnit(config.budgetType));
+                         imageDir / fmt::format("{}_{}_{}_{}{}.npy", sceneName,
+                                                p.settings.type->name, s.type, budget,
+                                                budgetUnit(config.budgetType));
                      writeHalfNpy(npy, relativeErrorImage(film, reference),
                                   {size_t(film.height()), size_t(film.width())});
                      record["error_image"] =
@@ -142,9 +145,9 @@ StudyProgress runConvergenceStudy(const ConvergenceConfig& config,
                    return fmt::format(
                        "{} {} threads={} {}={} run={}: {} spp, {:.3f} s wall, {:.3f} s "
                        "CPU, relMSE {:.4g}",
-                       p.settings.type, s.type, threadCounts[ti], budgetTypeName(config.budgetType),
-                       budget, run, timed.stats.passes, timed.wallSeconds, timed.cpuSeconds,
-                       error.relMse);
+                       p.settings.type->name, s.type, threadCounts[ti],
+                       budgetTypeName(config.budgetType), budget, run, timed.stats.passes,
+                       timed.wallSeconds, timed.cpuSeconds, error.relMse);
                  }});
           }
   return executeRuns(group, *std::max_element(threadCounts.begin(), threadCounts.end()), output,

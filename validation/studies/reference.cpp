@@ -19,7 +19,7 @@
 namespace verity::studies {
 
 ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup& group) {
-  const SceneFile file = loadSceneAtWidth(config.scene, config.resolution);
+  const SceneFile file = loadScene(config.scene, SceneOverrides::atWidth(config.resolution));
   requireIndependentSamples(*file.sampler, config.scene, "a reference image's variance channels");
   const IntegratorSettings settings = studyIntegrator(file, config.integrator, config.maxBounces);
   const auto integrator = makeIntegrator(settings);
@@ -36,7 +36,7 @@ ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup&
   const double ownRelMse = referenceRelMse(image);
   const MachineInfo machine = machineInfo();
   image.attributes["verity:scene"] = config.scene.string();
-  image.attributes["verity:integrator"] = settings.type;
+  image.attributes["verity:integrator"] = settings.type->name;
   image.attributes["verity:max_bounces"] = std::to_string(settings.maxBounces);
   image.attributes["verity:spp"] = std::to_string(timed.stats.passes);
   image.attributes["verity:seed"] = std::to_string(seed);
@@ -69,7 +69,7 @@ ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup&
       {"image", result.image.filename().string()},
       {"width", film.width()},
       {"height", film.height()},
-      {"integrator", settings.type},
+      {"integrator", settings.type->name},
       {"max_bounces", settings.maxBounces},
       {"spp", timed.stats.passes},
       {"seed", seed},
@@ -88,7 +88,7 @@ ReferenceResult makeReference(const ReferenceConfig& config, const ProcessGroup&
       // `revision` (renders do not depend on the thread count).
       {"command", fmt::format("verity reference {} --spp {} --integrator {} --max-bounces {} "
                               "--resolution {} --seed {} -o {}",
-                              config.scene.string(), timed.stats.passes, settings.type,
+                              config.scene.string(), timed.stats.passes, settings.type->name,
                               settings.maxBounces, film.width(), seed, config.directory.string())},
       {"rel_mse", ownRelMse},
       {"rel_mse_epsilon", kRelEpsilon},

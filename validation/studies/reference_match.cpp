@@ -34,7 +34,7 @@ void refuseNonFinite(const ImageChannels& image, const std::filesystem::path& fi
 
 void checkReferenceMatches(const std::filesystem::path& referenceFile,
                            const ImageChannels& reference, const std::filesystem::path& scene,
-                           const Vector2i& resolution, bool force,
+                           const Vector2i& resolution, bool resolutionGiven, bool force,
                            const std::function<void(const std::string&)>& log) {
   refuseNonFinite(reference, referenceFile,
                   "every error measured against it would be meaningless; make the reference "
@@ -43,9 +43,10 @@ void checkReferenceMatches(const std::filesystem::path& referenceFile,
     throw VerityError(
         referenceFile.string(), "",
         fmt::format("the reference is {}×{} pixels but the study renders {}×{}: "
-                    "errors are measured pixel by pixel (make a reference at "
-                    "this resolution, or leave out --resolution)",
-                    reference.width, reference.height, resolution.x(), resolution.y()));
+                    "errors are measured pixel by pixel (make a reference at this "
+                    "resolution{})",
+                    reference.width, reference.height, resolution.x(), resolution.y(),
+                    resolutionGiven ? ", or leave out --resolution" : " of this scene"));
   const auto it = reference.attributes.find("verity:scene");
   if (it == reference.attributes.end() || it->second.empty()) {
     if (log)

@@ -17,15 +17,15 @@ namespace verity::studies {
 void refuseNonFinite(const ImageChannels& image, const std::filesystem::path& file,
                      const std::string& consequence);
 
-// Throws VerityError naming the reference when it holds a value that is not finite (a half-float
-// reference written before they were checked can hold Inf), when its size differs from
-// `resolution`, or when the scene it records (the verity:scene attribute) is not `scene`; with
-// `force` a different scene is only reported to `log`. A reference that records no scene is
+// Throws VerityError naming the reference when it holds a value that is not finite, when its
+// size differs from `resolution` (advising to leave out --resolution only when
+// `resolutionGiven`), or when the scene it records (the verity:scene attribute) is not `scene`;
+// with `force` a different scene is only reported to `log`. A reference that records no scene is
 // reported to `log`. Scenes are the same file when both paths name one, else when their names
 // (stems) agree.
 void checkReferenceMatches(const std::filesystem::path& referenceFile,
                            const ImageChannels& reference, const std::filesystem::path& scene,
-                           const Vector2i& resolution, bool force,
+                           const Vector2i& resolution, bool resolutionGiven, bool force,
                            const std::function<void(const std::string&)>& log);
 
 }  // namespace verity::studies

@@ -34,7 +34,7 @@ StudyProgress runSpeedupStudy(const SpeedupConfig& config,
                               const std::function<void(const std::string&)>& log,
                               const ProcessGroup& group) {
   if (config.threads.empty()) throw VerityError("", "--threads", "no thread count given");
-  const SceneFile file = loadSceneAtWidth(config.scene, config.resolution);
+  const SceneFile file = loadScene(config.scene, SceneOverrides::atWidth(config.resolution));
   std::vector<PreparedIntegrator> integrators =
       prepareIntegrators(file, config.integrators, config.maxBounces);
   const Vector2i resolution = file.scene->camera().resolution();
@@ -51,7 +51,7 @@ StudyProgress runSpeedupStudy(const SpeedupConfig& config,
         header.update({{"threads", threads}, {"spp", config.spp}, {"repeat", repeat}});
         runs.push_back(
             {header, [&, threads, repeat, &p = p](nlohmann::json& record) {
-               const uint64_t seed = runSeed(p.settings.type, "speedup", config.spp, 0);
+               const uint64_t seed = runSeed(p.settings.type->name, "speedup", config.spp, 0);
                Film film(resolution);
                const TimedRender timed =
                    timedRender(file, *file.sampler, *p.integrator, film, config.spp, threads, seed);
@@ -64,7 +64,7 @@ StudyProgress runSpeedupStudy(const SpeedupConfig& config,
                record.update(provenance(machine));
                return fmt::format(
                    "{} threads={} repeat={}: {:.3f} s wall, {:.3f} s CPU, {:.3g} Mrays/s",
-                   p.settings.type, threads, repeat, timed.wallSeconds, timed.cpuSeconds,
+                   p.settings.type->name, threads, repeat, timed.wallSeconds, timed.cpuSeconds,
                    timed.stats.rays / std::max(timed.wallSeconds, 1e-9) / 1e6);
              }});
       }

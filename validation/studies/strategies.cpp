@@ -67,9 +67,9 @@ ComponentRender renderComponents(const SceneFile& file, const Integrator& integr
   const TimedRender timed =
       timedRender(file, *file.sampler, integrator, r.film, byTime ? 0 : int(std::lround(budget)),
                   threads, seed, byTime ? budget : 0, r.components.get());
-  r.record = {{"integrator", settings.type},     {"seed", seed},
-              {"spp", timed.stats.passes},       {"wall_seconds", timed.wallSeconds},
-              {"cpu_seconds", timed.cpuSeconds}, {"invalid_samples", timed.stats.invalidSamples}};
+  r.record = {{"integrator", settings.type->name}, {"seed", seed},
+              {"spp", timed.stats.passes},         {"wall_seconds", timed.wallSeconds},
+              {"cpu_seconds", timed.cpuSeconds},   {"invalid_samples", timed.stats.invalidSamples}};
   return r;
 }
 
@@ -100,9 +100,10 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
 
   std::optional<ImageChannels> reference;
   if (!config.reference.empty()) reference = readExr(config.reference);
-  const SceneFile file = loadSceneAtWidth(config.scene, config.resolution > 0 ? config.resolution
-                                                        : reference           ? reference->width
-                                                                              : 0);
+  const SceneFile file =
+      loadScene(config.scene, SceneOverrides::atWidth(config.resolution > 0 ? config.resolution
+                                                      : reference           ? reference->width
+                                                                            : 0));
   requireIndependentSamples(*file.sampler, config.scene,
                             "the strategies study's variance columns (rel_variance_*)");
   const IntegratorSettings settings = studyIntegrator(file, "bdpt", config.maxBounces);
@@ -112,8 +113,8 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
   const auto pathTracer = makeIntegrator(ptSettings);
   const Vector2i resolution = file.scene->camera().resolution();
   if (reference)
-    checkReferenceMatches(config.reference, *reference, config.scene, resolution, config.force,
-                          log);
+    checkReferenceMatches(config.reference, *reference, config.scene, resolution,
+                          config.resolution > 0, config.force, log);
   const MachineInfo machine = machineInfo();
   const int threads = config.threads > 0 ? config.threads : std::max(1, machine.cores);
   const double largestBudget = *std::max_element(config.budgets.begin(), config.budgets.end());
@@ -143,20 +144,20 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
       record.update({{"budget_type", budgetTypeName(config.budgetType)},
                      {"budget", budget},
                      {"run", run},
-                     {"path_tracer", {{"integrator", ptSettings.type}}}});
+                     {"path_tracer", {{"integrator", ptSettings.type->name}}}});
       if (output.has(record)) {
         ++progress.skipped;
         continue;
       }
       const ComponentRender strategies =
           renderComponents(file, *integrator, settings, ComponentLayout::Kind::Strategies, config,
-                           budget, threads, runSeed(settings.type, seedKind, budget, run));
+                           budget, threads, runSeed(settings.type->name, seedKind, budget, run));
       const ComponentRender lengths = renderComponents(
           file, *integrator, settings, ComponentLayout::Kind::PathLengths, config, budget, threads,
-          runSeed(settings.type + " path lengths", seedKind, budget, run));
+          runSeed(settings.type->name + " path lengths", seedKind, budget, run));
       const ComponentRender traced = renderComponents(
           file, *pathTracer, ptSettings, ComponentLayout::Kind::PathLengths, config, budget,
-          threads, runSeed(ptSettings.type, seedKind, budget, run));
+          threads, runSeed(ptSettings.type->name, seedKind, budget, run));
 
       // r_k: BDPT's length-k image from its own render, independent of the strategies'; all
       // of length k are averaged over the pixels where r_k is non-zero. (Not over those where
@@ -248,7 +249,7 @@ StudyProgress runStrategiesStudy(const StrategiesConfig& config,
             progress.done + progress.skipped, progress.total, budgetTypeName(config.budgetType),
             budget, run, settings.maxBounces, strategies.record["spp"].get<int>(),
             strategies.record["wall_seconds"].get<double>(), lengths.record["spp"].get<int>(),
-            lengths.record["wall_seconds"].get<double>(), ptSettings.type,
+            lengths.record["wall_seconds"].get<double>(), ptSettings.type->name,
             traced.record["spp"].get<int>(), traced.record["wall_seconds"].get<double>()));
     }
   return progress;

@@ -57,7 +57,7 @@ nlohmann::json recordHeader(const std::string& study, const std::filesystem::pat
       {"scene_file", scene.string()},
       {"width", resolution.x()},
       {"height", resolution.y()},
-      {"integrator", settings.type},
+      {"integrator", settings.type->name},
       {"max_bounces", settings.maxBounces},
   };
 }

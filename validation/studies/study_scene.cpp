@@ -20,7 +20,7 @@ std::string shippedSceneName(const std::filesystem::path& file) {
 }
 
 IntegratorSettings studyIntegrator(const SceneFile& file, const std::string& type, int maxBounces) {
-  return overrideIntegrator(file.integrator, type, maxBounces, "--integrator");
+  return overrideIntegrator(file.integrator, integratorOverrides(type, maxBounces));
 }
 
 }  // namespace verity::studies

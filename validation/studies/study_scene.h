@@ -1,5 +1,5 @@
 // Scenes for studies and validation suites: the shipped corpus and the integrator a study asks
-// for (scene/scene_at_width.h loads a scene at a chosen width).
+// for (loader/scene_loader.h loads a scene with a command line's overrides).
 #pragma once
 
 #include <filesystem>
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "integrators/integrator_settings.h"
-#include "loader/scene_at_width.h"
+#include "loader/scene_loader.h"
 
 namespace verity::studies {
 
@@ -17,8 +17,8 @@ std::vector<std::filesystem::path> shippedScenes(const std::filesystem::path& sc
 // A shipped scene's name as the tests print it: "cornell-box", "stress/floor-40".
 std::string shippedSceneName(const std::filesystem::path& file);
 
-// The integrator settings of `file` with the type (any accepted spelling) and max bounces
-// (if ≥ 0) overridden; throws VerityError for an unknown type.
+// The integrator settings of `file` with the type (any accepted spelling; "" keeps the scene's) and
+// max bounces (if ≥ 0) overridden; throws VerityError for an unknown type.
 IntegratorSettings studyIntegrator(const SceneFile& file, const std::string& type, int maxBounces);
 
 }  // namespace verity::studies

@@ -15,7 +15,7 @@
 
 #include <filesystem>
 
-#include "loader/scene_at_width.h"
+#include "loader/scene_loader.h"
 #include "tile_batches.h"
 #include "validation/compare/comparison_family.h"
 
@@ -38,8 +38,8 @@ PixelStatistics renderTiles(const SceneFile& file, const std::string& integrator
 TEST(RussianRoulette, DepthChangesImagesNotTheirExpectation) {
   const std::filesystem::path scene =
       std::filesystem::path(VERITY_SOURCE_DIR) / "scenes" / "cornell-box.json";
-  SceneFile atDefault = loadSceneAtWidth(scene, kWidth);
-  SceneFile atFirst = loadSceneAtWidth(scene, kWidth);
+  SceneFile atDefault = loadScene(scene, SceneOverrides::atWidth(kWidth));
+  SceneFile atFirst = loadScene(scene, SceneOverrides::atWidth(kWidth));
   ASSERT_EQ(atDefault.integrator.rrDepth, kDefaultRouletteDepth);
   atFirst.integrator.rrDepth = 1;
   ComparisonFamily family(kFamilyWiseLevel);

@@ -14,7 +14,7 @@
 
 #include <filesystem>
 
-#include "loader/scene_at_width.h"
+#include "loader/scene_loader.h"
 #include "tile_batches.h"
 #include "validation/compare/comparison_family.h"
 #include "validation/compare/suite_samplers.h"
@@ -30,8 +30,9 @@ constexpr int kBatchSpp = 4;
 constexpr double kFamilyWiseLevel = 0.01;
 
 SceneFile sceneWithSampler(const std::string& sampler) {
-  SceneFile file = loadSceneAtWidth(
-      std::filesystem::path(VERITY_SOURCE_DIR) / "scenes" / "cornell-box.json", kWidth);
+  SceneFile file =
+      loadScene(std::filesystem::path(VERITY_SOURCE_DIR) / "scenes" / "cornell-box.json",
+                SceneOverrides::atWidth(kWidth));
   useSampler(file, sampler, kBatchSpp);
   return file;
 }

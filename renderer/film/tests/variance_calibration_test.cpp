@@ -29,7 +29,7 @@
 
 #include "core/error.h"
 #include "film/image_io.h"
-#include "loader/scene_at_width.h"
+#include "loader/scene_loader.h"
 #include "render/renderer.h"
 #include "sampling/sampler.h"
 
@@ -87,8 +87,8 @@ struct Calibration {
 };
 
 Calibration calibrate(const Sampler& prototype) {
-  SceneFile file = loadSceneAtWidth(
-      std::filesystem::path(VERITY_SOURCE_DIR) / "scenes/cornell-box.json", kWidth);
+  SceneFile file = loadScene(std::filesystem::path(VERITY_SOURCE_DIR) / "scenes/cornell-box.json",
+                             SceneOverrides::atWidth(kWidth));
   const auto integrator = makeIntegrator(file.integrator);
   const PixelVariances a = renderSet(file, *integrator, prototype, 1000, kRendersA);
   const PixelVariances b = renderSet(file, *integrator, prototype, 2000, kRendersB);

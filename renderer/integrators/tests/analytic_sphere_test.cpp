@@ -43,7 +43,7 @@ class AnalyticSphere : public ::testing::TestWithParam<std::string> {};
 TEST_P(AnalyticSphere, MatchesAlbedoTimesBackground) {
   SceneFile file = loadSceneText(kScene, "/tmp/analytic-sphere.json");
   IntegratorSettings settings = file.integrator;
-  settings.type = GetParam();
+  settings.type = findIntegratorType(GetParam());
   const auto integrator = makeIntegrator(settings);
   Film film(file.scene->camera().resolution());
   RenderOptions options;

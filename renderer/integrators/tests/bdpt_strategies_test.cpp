@@ -67,7 +67,7 @@ class BdptStrategies : public ::testing::Test {
   static Estimates render(const std::string& integrator, ComponentLayout::Kind kind,
                           BdptStrategy dropped, int passes, uint64_t seedBase) {
     IntegratorSettings settings;
-    settings.type = integrator;
+    settings.type = findIntegratorType(integrator);
     settings.maxBounces = kMaxBounces;
     settings.bdptDroppedStrategy = dropped;
     const int width =

@@ -132,7 +132,7 @@ inline std::vector<RegionEstimate> estimateRegions(const std::string& sceneText,
                                                    const std::function<int(int, int)>& region) {
   // The scene's settings (such as the MIS power) with the integrator and length asked for.
   IntegratorSettings settings = loadSceneText(sceneText, "/tmp/bdpt-test.json").integrator;
-  settings.type = integrator;
+  settings.type = findIntegratorType(integrator);
   settings.maxBounces = maxBounces;
   return estimateImageRegions(sceneText, settings, std::nullopt, passes, seedBase, regions,
                               region)[0];

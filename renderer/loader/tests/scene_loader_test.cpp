@@ -33,7 +33,7 @@ std::string loadError(const std::string& text, const std::string& file = "/tmp/b
 TEST(SceneLoader, MinimalSceneUsesDefaults) {
   SceneFile f = loadSceneText(sceneWith(""), "/tmp/minimal.json");
   EXPECT_EQ(f.name, "minimal");
-  EXPECT_EQ(f.integrator.type, "path_tracer_mats");
+  EXPECT_EQ(f.integrator.type->name, "path_tracer_mats");
   EXPECT_EQ(f.integrator.maxBounces, 64);
   EXPECT_EQ(f.sampler->samplesPerPixel(), 1);
   EXPECT_EQ(f.scene->camera().resolution(), Vector2i(8, 6));
@@ -58,7 +58,7 @@ TEST(SceneLoader, IntegratorSpellings) {
     SceneFile f = loadSceneText(sceneWith(std::string(R"("integrator": {"type": ")") + spelling +
                                           R"(", "max bounces": 5, "power": 2})"),
                                 "/tmp/a.json");
-    EXPECT_EQ(f.integrator.type, "path_tracer_mis");
+    EXPECT_EQ(f.integrator.type->name, "path_tracer_mis");
     EXPECT_EQ(f.integrator.maxBounces, 5);
     EXPECT_EQ(f.integrator.misPower, 2);
   }
@@ -72,7 +72,7 @@ TEST(SceneLoader, IntegratorSpellings) {
   for (const char* type : {"normals", "ao", "path_tracer_mats", "path_tracer_nee"})
     EXPECT_EQ(loadSceneText(sceneWith(std::string(R"("integrator": {"type": ")") + type + "\"}"),
                             "/tmp/a.json")
-                  .integrator.type,
+                  .integrator.type->name,
               type);
 }
 
@@ -324,6 +324,61 @@ TEST(SceneLoader, LightChoiceStaysFiniteForPowersBeyondSinglePrecision) {
   EXPECT_FLOAT_EQ(f.scene->lightPmf(lights[0]), 1.0f);
   EXPECT_GE(f.scene->lightPmf(lights[1]), 0.0f);
   EXPECT_LT(f.scene->lightPmf(lights[1]), 1e-30f);
+}
+
+// A command line's overrides apply to the parsed file, before the scene is built; their errors
+// name the option, not the file.
+TEST(SceneLoader, OverridesApplyBeforeTheSceneIsBuilt) {
+  const std::string text = sceneWith(
+      R"("integrator": {"type": "path_tracer_nee", "max_bounces": 7},
+         "sampler": {"type": "independent", "samples": 5})");
+  SceneOverrides overrides = SceneOverrides::atWidth(20);
+  overrides.integrator.type = &integratorTypeNamed("bdpt", "--integrator");
+  overrides.integrator.rrDepth = 9;
+  overrides.sampler = "sobol";
+  const SceneFile f = loadSceneText(text, "/tmp/a.json", overrides);
+  EXPECT_EQ(f.scene->camera().resolution(), Vector2i(20, 15));  // 8 × 6 widened, aspect kept
+  EXPECT_EQ(f.integrator.type->name, "bdpt");
+  EXPECT_EQ(f.integrator.maxBounces, 7);  // the file's, not overridden
+  EXPECT_EQ(f.integrator.rrDepth, 9);
+  EXPECT_FALSE(f.sampler->samplesAreIndependent());  // sobol in place of the independent one
+  EXPECT_EQ(f.sampler->samplesPerPixel(), 5);
+
+  const auto error = [&](const SceneOverrides& o) {
+    try {
+      loadSceneText(text, "/tmp/a.json", o);
+    } catch (const VerityError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error(SceneOverrides::atWidth(100000)).rfind("--resolution: 100000 pixels wide", 0),
+            0u);
+  EXPECT_EQ(error(SceneOverrides::atWidth(20000)).rfind("--resolution: the image must have", 0),
+            0u);
+  SceneOverrides roulette;
+  roulette.integrator.type = &integratorTypeNamed("normals", "--integrator");
+  roulette.integrator.rrDepth = 2;
+  EXPECT_EQ(error(roulette).rfind("--rr-depth: ", 0), 0u) << error(roulette);
+  SceneOverrides sampler;
+  sampler.sampler = "sobolev";
+  EXPECT_EQ(error(sampler).rfind("--sampler: ", 0), 0u) << error(sampler);
+}
+
+// An integrator type says it has Russian roulette (--rr-depth applies) exactly when its scene
+// object takes "rr_depth".
+TEST(SceneLoader, RussianRouletteFlagMatchesTheKeyItReads) {
+  for (const IntegratorType& type : integratorTypes()) {
+    const std::string text =
+        sceneWith(R"("integrator": {"type": ")" + type.name + R"(", "rr_depth": 5})");
+    bool reads = true;
+    try {
+      reads = loadSceneText(text, "/tmp/a.json").integrator.rrDepth == 5;
+    } catch (const VerityError&) {
+      reads = false;
+    }
+    EXPECT_EQ(type.hasRussianRoulette, reads) << type.name;
+  }
 }
 
 TEST(SceneLoaderErrors, CameraValues) {

@@ -21,7 +21,7 @@ Rendered renderWith(const std::string& integrator, ComponentLayout::Kind kind, i
                     int threads, int spp) {
   SceneFile file = loadSceneText(kDiffuseBox, "/tmp/component-images.json");
   IntegratorSettings settings = file.integrator;
-  settings.type = integrator;
+  settings.type = findIntegratorType(integrator);
   settings.maxBounces = maxBounces;
   const Vector2i res = file.scene->camera().resolution();
   Rendered out{Film(res),

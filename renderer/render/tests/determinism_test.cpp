@@ -6,7 +6,6 @@
 #include <filesystem>
 
 #include "film/image_io.h"
-#include "loader/scene_at_width.h"
 #include "loader/scene_loader.h"
 #include "render/renderer.h"
 #include "sampling/sampler.h"
@@ -83,9 +82,7 @@ TEST(SamplerDeterminism, EachSamplerByteIdenticalForOneAndTwoThreads) {
 // Every shipped scene (scenes/*.json) with each correlated sampler: each scene's integrator,
 // materials and lights ask for dimensions in their own order. Thread dependence shows only
 // where the second thread takes tiles, so the renders are large enough for it to: 64 pixels
-// wide at 16 spp (4 s). A halton keyed by the thread was caught here on metals and
-// textured-box; at 16 pixels and 2 spp (one tile) it went unnoticed, as it does in the small
-// renders above.
+// wide at 16 spp, several tiles (a render of one tile, as above, cannot show it).
 constexpr int kSceneWidth = 64, kSceneSpp = 16;
 
 TEST(SamplerDeterminism, EveryShippedSceneWithEachSamplerForOneAndTwoThreads) {
@@ -96,7 +93,7 @@ TEST(SamplerDeterminism, EveryShippedSceneWithEachSamplerForOneAndTwoThreads) {
     ++scenes;
     for (const char* type : {"stratified", "halton", "sobol"}) {
       SCOPED_TRACE(entry.path().filename().string() + ", " + type);
-      SceneFile file = loadSceneAtWidth(entry.path(), kSceneWidth);
+      SceneFile file = loadScene(entry.path(), SceneOverrides::atWidth(kSceneWidth));
       file.sampler = makeSampler(type, "sampler");
       file.sampler->setSamplesPerPixel(kSceneSpp);
       const auto one = renderWithThreads(file, 1), two = renderWithThreads(file, 2);

@@ -5,15 +5,16 @@
 
 #include <filesystem>
 
-#include "loader/scene_at_width.h"
+#include "loader/scene_loader.h"
 #include "render/renderer.h"
 
 namespace verity {
 namespace {
 
 TEST(SampleMaxima, RenderKeepsEachPixelsLargestSample) {
-  SceneFile file = loadSceneAtWidth(
-      std::filesystem::path(VERITY_SOURCE_DIR) / "scenes" / "cornell-box.json", 16);
+  SceneFile file =
+      loadScene(std::filesystem::path(VERITY_SOURCE_DIR) / "scenes" / "cornell-box.json",
+                SceneOverrides::atWidth(16));
   const auto integrator = makeIntegrator(file.integrator);
   Film film(file.scene->camera().resolution());
   film.trackMaxima();

@@ -42,7 +42,7 @@ constexpr int kSpp = 2048;
 PixelStatistics renderImage(const char* integratorType, uint64_t seed) {
   SceneFile file = loadSceneText(kScene, "/tmp/validation-end-to-end.json");
   IntegratorSettings settings = file.integrator;
-  settings.type = integratorType;
+  settings.type = findIntegratorType(integratorType);
   const auto integrator = makeIntegrator(settings);
   Film film(file.scene->camera().resolution());
   RenderOptions options;

@@ -106,7 +106,7 @@ struct SceneStatistics {
 SceneStatistics renderScene(int sceneIndex, const std::filesystem::path& path, bool pathLengths) {
   SceneStatistics out;
   out.name = studies::shippedSceneName(path);
-  SceneFile file = loadSceneAtWidth(path, kWidth);
+  SceneFile file = loadScene(path, SceneOverrides::atWidth(kWidth));
   const Vector2i res = file.scene->camera().resolution();
   const std::vector<int> tiles = tileRegions(res.x(), res.y(), kTileSize, &out.tiles);
   std::vector<int> masked = tiles;

@@ -1,5 +1,5 @@
 // What a sampling test examines: a sampler and the density it claims, on a domain. Warps,
-// BSDFs and (later) light samplers are adapted to this one interface.
+// BSDFs and light samplers (chi2/suite) are adapted to this one interface.
 #pragma once
 
 #include <verity/chi2/audit.h>
