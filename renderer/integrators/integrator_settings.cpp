@@ -1,6 +1,5 @@
 #include "integrators/integrator_settings.h"
 
-#include <limits>
 #include <stdexcept>
 
 #include "integrators/integrator_registry.h"
@@ -10,12 +9,7 @@ namespace verity {
 IntegratorSettings overrideIntegrator(IntegratorSettings settings, const std::string& type,
                                       int maxBounces, const std::string& option) {
   if (!type.empty()) {
-    const IntegratorType* t = findIntegratorType(type);
-    if (!t)
-      throw VerityError(
-          "", option,
-          "unknown integrator type \"" + type + "\" (expected " + integratorTypeList() + ")");
-    settings.type = t->name;
+    settings.type = integratorTypes().get(type, option).name;
   }
   if (maxBounces >= 0) settings.maxBounces = maxBounces;
   return settings;
@@ -25,22 +19,15 @@ IntegratorSettings parseIntegratorSettings(const JsonNode* node) {
   IntegratorSettings s;
   if (!node) return s;
   if (!node->isObject()) node->fail("expected an integrator object with a \"type\"");
-  const std::string given = node->type();
-  const IntegratorType* type = findIntegratorType(given);
-  if (!type)
-    (*node)[{"type"}].fail("unknown integrator type \"" + given + "\" (expected " +
-                           integratorTypeList() + ")");
+  const IntegratorType* type = &integratorTypes().get((*node)[{"type"}]);
   s.type = type->name;
   node->declare({"integrator " + type->name, {&integratorCommonKeys(), &type->keys}});
   // Each key is read only by the types that declare it: another type's key is unknown.
-  if (declaresKey(*type, "max_bounces"))
-    s.maxBounces = node->getInt({"max_bounces", "max bounces"}, s.maxBounces, 0, kMaxBouncesLimit);
-  if (declaresKey(*type, "rr_depth"))
-    s.rrDepth = node->getInt({"rr_depth"}, s.rrDepth, 1, std::numeric_limits<int>::max());
-  if (declaresKey(*type, "power"))
-    s.misPower = node->getFloat({"power"}, s.misPower, Range{0, 16, true, false});
-  if (declaresKey(*type, "distance"))
-    s.aoDistance = node->getFloat({"distance"}, s.aoDistance, Range::positive());
+  using namespace integrator_keys;
+  if (declaresKey(*type, kMaxBounces.name)) s.maxBounces = node->get(kMaxBounces);
+  if (declaresKey(*type, kRrDepth.name)) s.rrDepth = node->get(kRrDepth);
+  if (declaresKey(*type, kMisPower.name)) s.misPower = node->get(kMisPower);
+  if (declaresKey(*type, kAoDistance.name)) s.aoDistance = node->get(kAoDistance);
   node->rejectUnknownKeys();
   return s;
 }
