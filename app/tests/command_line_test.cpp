@@ -113,7 +113,8 @@ TEST_F(CommandLine, RenderWithAnotherSampler) {
   EXPECT_NE(readExr(dir_ / "scene.exr").planes, readExr(dir_ / "sobol.exr").planes);
   const testing::Outcome unknown = render({"--sampler", "sobolev"}, "x.exr");
   EXPECT_EQ(unknown.status, 2);
-  EXPECT_NE(unknown.stderrText.find("--sampler: unknown sampler \"sobolev\""), std::string::npos)
+  EXPECT_NE(unknown.stderrText.find("--sampler: unknown sampler type \"sobolev\""),
+            std::string::npos)
       << unknown.stderrText;
   const testing::Outcome variance = render({"--sampler", "halton", "--variance"}, "y.exr");
   EXPECT_EQ(variance.status, 2);

@@ -1,7 +1,5 @@
 #include "integrators/integrator_registry.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 
 #include "integrators/ambient_occlusion.h"
@@ -22,52 +20,17 @@ std::unique_ptr<Integrator> makePathTracer(const IntegratorSettings& s) {
                                       RussianRoulette(s.rrDepth));
 }
 
-// The keys the integrators share. Their defaults are IntegratorSettings' own (named
-// constants: the table cannot make settings, whose default type is one of its entries).
-KeyDeclaration maxBouncesKey() {
-  return {"max_bounces",
-          {"max bounces"},
-          ValueType::Integer,
-          fmt::format("[0, {}]", kMaxBouncesLimit),
-          std::to_string(kDefaultMaxBounces),
-          "the most scattering events on a path: 0 shows only emitters seen directly, 1 adds "
-          "direct lighting"};
-}
-
-KeyDeclaration rrDepthKey() {
-  return {"rr_depth",
-          {},
-          ValueType::Integer,
-          ">= 1",
-          std::to_string(kDefaultRouletteDepth),
-          "the non-specular scattering event after which Russian roulette first decides "
-          "whether a path goes on (1: after the first; specular events, at mirrors and "
-          "smooth glass, are not counted); one more than max_bounces turns the roulette off"};
-}
-
-KeyDeclaration misPowerKey(const std::string& what) {
-  return {"power",
-          {},
-          ValueType::Number,
-          "(0, 16]",
-          "1",
-          "the exponent of the power heuristic that weights " + what +
-              ": 1 is the balance heuristic, 2 Veach's usual power heuristic"};
-}
-
-KeyDeclaration aoDistanceKey() {
-  return {"distance",
-          {},
-          ValueType::Number,
-          "> 0",
-          "infinite",
-          "the occlusion radius: a point is occluded in a direction when a surface lies closer "
-          "than this"};
+// "power" as the type lists it: what its heuristic weights.
+Key<float> misPowerKey(const std::string& what) {
+  return integrator_keys::kMisPower.described(
+      "the exponent of the power heuristic that weights " + what +
+      ": 1 is the balance heuristic, 2 Veach's usual power heuristic");
 }
 
 // One explicit table rather than self-registering objects: the renderer is a static library,
 // and the linker drops an object file nothing references, registration and all.
 std::vector<IntegratorType> makeTable() {
+  using namespace integrator_keys;
   std::vector<IntegratorType> t;
   t.push_back({.name = "normals",
                .description = "shading normals as colours (a debugging view)",
@@ -77,7 +40,7 @@ std::vector<IntegratorType> makeTable() {
   t.push_back({.name = "ao",
                .aliases = {"ambient_occlusion"},
                .description = "ambient occlusion within \"distance\"",
-               .keys = {aoDistanceKey()},
+               .keys = declarations(kAoDistance),
                .make = [](const IntegratorSettings& s) -> std::unique_ptr<Integrator> {
                  return std::make_unique<AmbientOcclusion>(s.aoDistance);
                }});
@@ -86,7 +49,7 @@ std::vector<IntegratorType> makeTable() {
                .strategies = "emission found by material sampling alone: rays that hit an "
                              "emitter or escape to the background; no shadow rays",
                .estimatesRadiance = true,
-               .keys = {maxBouncesKey(), rrDepthKey()},
+               .keys = declarations(kMaxBounces, kRrDepth),
                .hasRussianRoulette = true,
                .make = makePathTracer<PathTracer::Strategy::Materials>});
   t.push_back({.name = "path_tracer_nee",
@@ -96,18 +59,19 @@ std::vector<IntegratorType> makeTable() {
                              "emission hit by material sampling only when seen directly or "
                              "after a delta bounce",
                .estimatesRadiance = true,
-               .keys = {maxBouncesKey(), rrDepthKey()},
+               .keys = declarations(kMaxBounces, kRrDepth),
                .hasRussianRoulette = true,
                .make = makePathTracer<PathTracer::Strategy::NextEvent>});
-  t.push_back({.name = "path_tracer_mis",
-               .description = "path tracing, material and light samples combined by MIS",
-               .strategies = "material sampling and next-event estimation at non-delta "
-                             "surfaces, combined by multiple importance sampling (balance "
-                             "heuristic, or power heuristic with \"power\")",
-               .estimatesRadiance = true,
-               .keys = {maxBouncesKey(), rrDepthKey(), misPowerKey("material and light samples")},
-               .hasRussianRoulette = true,
-               .make = makePathTracer<PathTracer::Strategy::Mis>});
+  t.push_back(
+      {.name = "path_tracer_mis",
+       .description = "path tracing, material and light samples combined by MIS",
+       .strategies = "material sampling and next-event estimation at non-delta "
+                     "surfaces, combined by multiple importance sampling (balance "
+                     "heuristic, or power heuristic with \"power\")",
+       .estimatesRadiance = true,
+       .keys = declarations(kMaxBounces, kRrDepth, misPowerKey("material and light samples")),
+       .hasRussianRoulette = true,
+       .make = makePathTracer<PathTracer::Strategy::Mis>});
   t.push_back({.name = "bdpt",
                .description = "bidirectional path tracing, MIS over every strategy (s, t)",
                .strategies = "every connection (s, t) of a light subpath of s vertices and a "
@@ -115,7 +79,7 @@ std::vector<IntegratorType> makeTable() {
                              "sampling; light subpaths connected to the lens (t = 1) are "
                              "splatted",
                .estimatesRadiance = true,
-               .keys = {maxBouncesKey(), rrDepthKey(), misPowerKey("the strategies (s, t)")},
+               .keys = declarations(kMaxBounces, kRrDepth, misPowerKey("the strategies (s, t)")),
                .hasRussianRoulette = true,
                .hasStrategies = true,
                .make = [](const IntegratorSettings& s) -> std::unique_ptr<Integrator> {
@@ -129,7 +93,7 @@ std::vector<IntegratorType> makeTable() {
                              "seen directly; nothing the camera sees only in a mirror or through "
                              "smooth glass",
                .estimatesRadiance = true,
-               .keys = {maxBouncesKey(), rrDepthKey()},
+               .keys = declarations(kMaxBounces, kRrDepth),
                .hasRussianRoulette = true,
                .splatsOnly = true,
                .make = [](const IntegratorSettings& s) -> std::unique_ptr<Integrator> {
@@ -141,43 +105,20 @@ std::vector<IntegratorType> makeTable() {
 
 }  // namespace
 
-const std::vector<IntegratorType>& integratorTypes() {
-  static const std::vector<IntegratorType> table = makeTable();
+const Registry<IntegratorType>& integratorTypes() {
+  static const Registry<IntegratorType> table("integrator type", makeTable());
   return table;
 }
 
 const KeyList& integratorCommonKeys() {
-  static const KeyList keys = {{"type",
-                                {},
-                                ValueType::String,
-                                "a type's name or other spelling (any letter case; spaces read "
-                                "as _)",
-                                "\"" + defaultIntegratorType().name + "\"",
-                                "the integrator type"}};
+  static const KeyList keys = {
+      integratorTypes().typeKey("\"" + defaultIntegratorType().name + "\"")};
   return keys;
 }
 
 bool declaresKey(const IntegratorType& type, const std::string& name) {
   return std::any_of(type.keys.begin(), type.keys.end(),
                      [&](const KeyDeclaration& k) { return k.name == name; });
-}
-
-const IntegratorType* findIntegratorType(const std::string& name) {
-  std::string spelled = name;
-  std::replace(spelled.begin(), spelled.end(), ' ', '_');
-  for (const IntegratorType& t : integratorTypes())
-    if (t.name == spelled ||
-        std::find(t.aliases.begin(), t.aliases.end(), spelled) != t.aliases.end())
-      return &t;
-  return nullptr;
-}
-
-std::string integratorTypeList() {
-  const auto& types = integratorTypes();
-  std::string list;
-  for (size_t i = 0; i < types.size(); ++i)
-    list += (i == 0 ? "" : i + 1 == types.size() ? " or " : ", ") + types[i].name;
-  return list;
 }
 
 std::vector<std::string> radianceIntegrators() {

@@ -9,15 +9,52 @@
 #include <vector>
 
 #include "integrators/integrator.h"
+#include "integrators/integrator_settings.h"
+#include "params/key.h"
 #include "params/key_declaration.h"
+#include "params/registry.h"
 
 namespace verity {
 
-struct IntegratorSettings;
+// The keys the integrators share, each declared once: the types' entries list them and
+// parseIntegratorSettings reads them. Their defaults are IntegratorSettings' own (its named
+// constants: default settings point into this table, which lists these keys).
+namespace integrator_keys {
+inline const Key<int> kMaxBounces{
+    .name = "max_bounces",
+    .aliases = {"max bounces"},
+    .defaultValue = kDefaultMaxBounces,
+    .allowed = {0, kMaxBouncesLimit},
+    .meaning =
+        "the most scattering events on a path: 0 shows only emitters seen directly, 1 "
+        "adds direct lighting"};
+inline const Key<int> kRrDepth{
+    .name = "rr_depth",
+    .defaultValue = kDefaultRouletteDepth,
+    .allowed = {1, std::numeric_limits<int>::max()},
+    .meaning =
+        "the non-specular scattering event after which Russian roulette first decides "
+        "whether a path goes on (1: after the first; specular events, at mirrors and "
+        "smooth glass, are not counted); one more than max_bounces turns the roulette off"};
+inline const Key<float> kMisPower{
+    .name = "power",
+    .defaultValue = kDefaultMisPower,
+    .allowed = {0, 16, true, false},
+    .meaning =
+        "the exponent of the power heuristic (each type that reads it says what it "
+        "weights)"};
+inline const Key<float> kAoDistance{
+    .name = "distance",
+    .defaultValue = kInfinity,
+    .allowed = Range::positive(),
+    .meaning =
+        "the occlusion radius: a point is occluded in a direction when a surface lies "
+        "closer than this"};
+}  // namespace integrator_keys
 
 struct IntegratorType {
   std::string name;                  // canonical, as records and manifests spell it
-  std::vector<std::string> aliases;  // other accepted spellings (spaces read as '_')
+  std::vector<std::string> aliases;  // other accepted spellings
   std::string description;
   // How it finds light, for --explain: the strategies it samples paths with, and the light it
   // cannot find. Empty for the debugging views, which do not transport light.
@@ -38,15 +75,18 @@ struct IntegratorType {
   std::unique_ptr<Integrator> (*make)(const IntegratorSettings&) = nullptr;
 };
 
-const std::vector<IntegratorType>& integratorTypes();
+const Registry<IntegratorType>& integratorTypes();
 // The keys every integrator object takes: "type".
 const KeyList& integratorCommonKeys();
 // Whether `type` declares the key named `name` (its canonical spelling).
 bool declaresKey(const IntegratorType& type, const std::string& name);
-// The type `name` (any accepted spelling), or nullptr.
-const IntegratorType* findIntegratorType(const std::string& name);
-// The canonical names, for help and errors: "normals, ao, ... or light_tracer".
-std::string integratorTypeList();
+// The table's lookup and list, as the commands spell them.
+inline const IntegratorType* findIntegratorType(std::string_view spelling) {
+  return integratorTypes().find(spelling);
+}
+inline std::string integratorTypeList() {
+  return integratorTypes().names();
+}
 // The canonical names of the radiance estimators, in table order.
 std::vector<std::string> radianceIntegrators();
 

@@ -1,6 +1,5 @@
 #include "integrators/integrator_settings.h"
 
-#include <limits>
 #include <stdexcept>
 
 #include "integrators/integrator_registry.h"
@@ -8,17 +7,12 @@
 namespace verity {
 
 const IntegratorType& defaultIntegratorType() {
-  static const IntegratorType& type = *findIntegratorType("path_tracer_mats");
+  static const IntegratorType& type = integratorTypes().get("path_tracer_mats", "");
   return type;
 }
 
 const IntegratorType& integratorTypeNamed(const std::string& name, const std::string& option) {
-  const IntegratorType* type = findIntegratorType(name);
-  if (!type)
-    throw VerityError(
-        "", option,
-        "unknown integrator type \"" + name + "\" (expected " + integratorTypeList() + ")");
-  return *type;
+  return integratorTypes().get(name, option);
 }
 
 IntegratorOverrides integratorOverrides(const std::string& type, int maxBounces) {
@@ -45,22 +39,15 @@ IntegratorSettings parseIntegratorSettings(const JsonNode* node) {
   IntegratorSettings s;
   if (!node) return s;
   if (!node->isObject()) node->fail("expected an integrator object with a \"type\"");
-  const std::string given = node->type();
-  const IntegratorType* type = findIntegratorType(given);
-  if (!type)
-    (*node)[{"type"}].fail("unknown integrator type \"" + given + "\" (expected " +
-                           integratorTypeList() + ")");
-  s.type = type;
-  node->declare({"integrator " + type->name, {&integratorCommonKeys(), &type->keys}});
+  const IntegratorType& type = integratorTypes().get((*node)[{"type"}]);
+  s.type = &type;
+  node->declare({"integrator " + type.name, {&integratorCommonKeys(), &type.keys}});
   // Each key is read only by the types that declare it: another type's key is unknown.
-  if (declaresKey(*type, "max_bounces"))
-    s.maxBounces = node->getInt({"max_bounces", "max bounces"}, s.maxBounces, 0, kMaxBouncesLimit);
-  if (declaresKey(*type, "rr_depth"))
-    s.rrDepth = node->getInt({"rr_depth"}, s.rrDepth, 1, std::numeric_limits<int>::max());
-  if (declaresKey(*type, "power"))
-    s.misPower = node->getFloat({"power"}, s.misPower, Range{0, 16, true, false});
-  if (declaresKey(*type, "distance"))
-    s.aoDistance = node->getFloat({"distance"}, s.aoDistance, Range::positive());
+  using namespace integrator_keys;
+  if (declaresKey(type, kMaxBounces.name)) s.maxBounces = node->get(kMaxBounces);
+  if (declaresKey(type, kRrDepth.name)) s.rrDepth = node->get(kRrDepth);
+  if (declaresKey(type, kMisPower.name)) s.misPower = node->get(kMisPower);
+  if (declaresKey(type, kAoDistance.name)) s.aoDistance = node->get(kAoDistance);
   node->rejectUnknownKeys();
   return s;
 }

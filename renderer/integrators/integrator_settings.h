@@ -8,7 +8,6 @@
 #include <string>
 
 #include "integrators/bdpt.h"
-#include "integrators/integrator_registry.h"
 #include "integrators/russian_roulette.h"
 #include "params/json_node.h"
 
@@ -18,14 +17,16 @@ namespace verity {
 // before; the limit keeps vertex counts such as max_bounces + 2 far from overflow).
 inline constexpr int kMaxBouncesLimit = 1 << 20;
 inline constexpr int kDefaultMaxBounces = 64;
+inline constexpr float kDefaultMisPower = 1;  // the balance heuristic
 
+struct IntegratorType;
 // The integrator a scene gets when it names none.
 const IntegratorType& defaultIntegratorType();
 
 struct IntegratorSettings {
   const IntegratorType* type = &defaultIntegratorType();  // an entry of integratorTypes()
   int maxBounces = kDefaultMaxBounces;
-  float misPower = 1;  // 1: balance heuristic, 2: power heuristic
+  float misPower = kDefaultMisPower;  // 1: balance heuristic, 2: power heuristic
   // "rr_depth": the scattering event after which Russian roulette first decides whether a path
   // goes on (1: after the first); one larger than max_bounces turns the roulette off.
   int rrDepth = kDefaultRouletteDepth;

@@ -13,8 +13,9 @@ class Sampler;
 
 // The non-specular scattering event at which roulette starts unless the integrator's
 // "rr_depth" says otherwise: with 3, a path is always followed through its first two
-// non-specular events, and the roulette first decides after the third. reports/validation-findings.md
-// records the efficiency studies behind this value and behind not counting specular events (`verity bench
+// non-specular events, and the roulette first decides after the third.
+// reports/validation-findings.md records the efficiency studies behind this value and behind not
+// counting specular events (`verity bench
 // --rr-depth`).
 inline constexpr int kDefaultRouletteDepth = 3;
 

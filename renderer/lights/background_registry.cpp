@@ -1,39 +1,37 @@
 #include "lights/background_registry.h"
 
-#include "params/json_node.h"
+#include "params/key.h"
 
 namespace verity {
 
 namespace {
 
+const Key<Color3> kBackgroundColor{.name = "color",
+                                   .allowed = Range::nonNegative(),
+                                   .meaning = "the radiance arriving from every direction"};
+
 BackgroundType constantBackground() {
   return {"constant",
+          {},
           "the same radiance from every direction",
-          {{"color",
-            {},
-            ValueType::Rgb,
-            "each channel >= 0",
-            "required",
-            "the radiance arriving from every direction"}},
+          declarations(kBackgroundColor),
           [](const JsonNode& node) {
-            const JsonNode color = node[{"color"}];
-            const Vector3f c = color.asVector3();
-            if ((c.array() < 0).any()) color.fail("background radiance must not be negative");
-            return std::make_unique<EnvironmentLight>(Color3(c.array()));
+            return std::make_unique<EnvironmentLight>(node.get(kBackgroundColor));
           }};
 }
 
+const Key<std::string> kBackgroundFile{
+    .name = "filename",
+    .allowed = "an image file, relative to the scene file",
+    .meaning = "the radiance map: its top row is straight up (+y), its columns run once around y"};
+
 BackgroundType imageBackground() {
   return {"image",
+          {},
           "a latitude-longitude image, importance-sampled by luminance",
-          {{"filename",
-            {},
-            ValueType::String,
-            "an image file, relative to the scene file",
-            "required",
-            "the radiance map: its top row is straight up (+y), its columns run once around y"}},
+          declarations(kBackgroundFile),
           [](const JsonNode& node) {
-            const JsonNode file = node[{"filename"}];
+            const JsonNode file = node[kBackgroundFile];
             try {
               return std::make_unique<EnvironmentLight>(
                   std::make_shared<ImageTexture>(node.resolve(file.asString()), file.path()));
@@ -46,32 +44,14 @@ BackgroundType imageBackground() {
 
 }  // namespace
 
-const std::vector<BackgroundType>& backgroundTypes() {
-  static const std::vector<BackgroundType> types = {constantBackground(), imageBackground()};
+const Registry<BackgroundType>& backgroundTypes() {
+  static const Registry<BackgroundType> types("background type",
+                                              {constantBackground(), imageBackground()});
   return types;
 }
 
-const BackgroundType* findBackgroundType(const std::string& name) {
-  for (const BackgroundType& t : backgroundTypes())
-    if (t.name == name) return &t;
-  return nullptr;
-}
-
-std::string backgroundTypeList() {
-  const auto& types = backgroundTypes();
-  std::string list;
-  for (size_t i = 0; i < types.size(); ++i)
-    list += (i == 0 ? "" : i + 1 == types.size() ? " or " : ", ") + types[i].name;
-  return list;
-}
-
 const KeyList& backgroundCommonKeys() {
-  static const KeyList keys = {{"type",
-                                {},
-                                ValueType::String,
-                                "a background type's name (any letter case)",
-                                "required",
-                                "the background type"}};
+  static const KeyList keys = {backgroundTypes().typeKey()};
   return keys;
 }
 

@@ -9,6 +9,7 @@
 
 #include "lights/environment_light.h"
 #include "params/key_declaration.h"
+#include "params/registry.h"
 
 namespace verity {
 
@@ -17,17 +18,14 @@ class JsonNode;
 struct BackgroundType {
   using Build = std::unique_ptr<EnvironmentLight> (*)(const JsonNode& node);
   std::string name;
+  std::vector<std::string> aliases;  // other spellings of the same type
   std::string description;
   KeyList keys;  // besides backgroundCommonKeys()
   Build build;
 };
 
 // In the order of the table in background_registry.cpp.
-const std::vector<BackgroundType>& backgroundTypes();
-// The type named `name` (lower case); null if none.
-const BackgroundType* findBackgroundType(const std::string& name);
-// "constant or image", for errors.
-std::string backgroundTypeList();
+const Registry<BackgroundType>& backgroundTypes();
 // The keys every background object takes: "type".
 const KeyList& backgroundCommonKeys();
 

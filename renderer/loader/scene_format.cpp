@@ -30,7 +30,7 @@ std::vector<FormatFamily> makeFamilies() {
                       {{"group", {}, "surfaces placed together by one transform", &groupKeys()}}});
   FormatFamily shapes{"shape", &shapeCommonKeys(), {}};
   for (const ShapeType& t : shapeTypes())
-    shapes.types.push_back({t.name, {}, t.description, &t.keys});
+    shapes.types.push_back({t.name, t.aliases, t.description, &t.keys});
   families.push_back(std::move(shapes));
   FormatFamily materials{"material", &materialCommonKeys(), {}};
   for (const MaterialType& t : materialTypes())
@@ -38,11 +38,11 @@ std::vector<FormatFamily> makeFamilies() {
   families.push_back(std::move(materials));
   FormatFamily textures{"texture", &textureCommonKeys(), {}};
   for (const TextureType& t : textureTypes())
-    textures.types.push_back({t.name, {}, t.description, &t.keys});
+    textures.types.push_back({t.name, t.aliases, t.description, &t.keys});
   families.push_back(std::move(textures));
   FormatFamily backgrounds{"background", &backgroundCommonKeys(), {}};
   for (const BackgroundType& t : backgroundTypes())
-    backgrounds.types.push_back({t.name, {}, t.description, &t.keys});
+    backgrounds.types.push_back({t.name, t.aliases, t.description, &t.keys});
   families.push_back(std::move(backgrounds));
   FormatFamily integrators{"integrator", &integratorCommonKeys(), {}};
   for (const IntegratorType& t : integratorTypes())

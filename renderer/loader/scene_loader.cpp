@@ -16,10 +16,6 @@ namespace verity {
 
 namespace {
 
-// The most pixels an image may have (8192²): the film keeps several channels per pixel.
-constexpr int64_t kMaxPixels = int64_t{1} << 26;
-constexpr int kMaxImageSide = 1 << 15;
-
 const std::string kExtentProblem =
     "lies outside the supported extent: every coordinate must be within ±1e15";
 
@@ -28,7 +24,7 @@ bool withinExtent(const Point3f& p) {
 }
 
 void checkPixelCount(const Vector2i& resolution, const std::function<void(std::string)>& fail) {
-  if (int64_t{resolution.x()} * resolution.y() > kMaxPixels)
+  if (int64_t{resolution.x()} * resolution.y() > scene_keys::kMaxPixels)
     fail(fmt::format("the image must have at most 8192 × 8192 pixels in all, not {} × {}",
                      resolution.x(), resolution.y()));
 }
@@ -41,6 +37,7 @@ Vector2i resolutionAtWidth(const Vector2i& resolution, int width) {
   const auto fail = [](const std::string& problem) {
     throw VerityError("", "--resolution", problem);
   };
+  using scene_keys::kMaxImageSide;
   if (width > kMaxImageSide || height > kMaxImageSide)
     fail(fmt::format("{} pixels wide makes a {} × {} image: each side must be at most {}", width,
                      width, height, kMaxImageSide));
@@ -49,24 +46,22 @@ Vector2i resolutionAtWidth(const Vector2i& resolution, int width) {
 }
 
 std::unique_ptr<Camera> parseCamera(const JsonNode& node, int width) {
+  using namespace scene_keys;
   if (!node.isObject()) node.fail("expected a camera object");
   node.declare({"the camera", {&cameraKeys()}});
   const Transform toWorld = parseOptionalTransform(node);
-  if (!withinExtent(toWorld.point(Point3f::Zero()))) node[{"transform"}].fail(kExtentProblem);
+  if (!withinExtent(toWorld.point(Point3f::Zero()))) node[kCameraTransform].fail(kExtentProblem);
   // The camera maps its image plane through the transform: a shear or non-uniform scale
   // would squash the image, as it would a sphere.
   if (!toWorld.isSimilarity(nullptr))
-    node[{"transform"}].fail(
+    node[kCameraTransform].fail(
         "a camera's transform must scale uniformly (no shear or non-uniform scale)");
-  Vector2i resolution(512, 512);
-  if (auto r = node.find({"resolution"})) {
-    resolution = r->asVector2i(1, kMaxImageSide);
-    checkPixelCount(resolution, [&](const std::string& problem) { r->fail(problem); });
-  }
+  Vector2i resolution = node.get(kResolution);
+  checkPixelCount(resolution, [&](const std::string& problem) { node[kResolution].fail(problem); });
   if (width > 0) resolution = resolutionAtWidth(resolution, width);
-  const float vfov = node.getFloat({"vfov"}, 90, Range{0, 180, true, true});
-  const float fdist = node.getFloat({"fdist"}, 1, Range{0, kMaxSceneCoordinate, true, false});
-  const float aperture = node.getFloat({"aperture"}, 0, Range{0, kMaxSceneCoordinate});
+  const float vfov = node.get(kVfov);
+  const float fdist = node.get(kFdist);
+  const float aperture = node.get(kAperture);
   node.rejectUnknownKeys();
   return std::make_unique<Camera>(toWorld, resolution, vfov, fdist, aperture);
 }
@@ -78,13 +73,9 @@ std::unique_ptr<EnvironmentLight> parseBackground(const JsonNode& node, TextureF
     return std::make_unique<EnvironmentLight>(Color3(c.array()));
   }
   if (!node.isObject()) node.fail("expected a number, [r,g,b] or a background object");
-  const std::string type = node.type();
-  const BackgroundType* entry = findBackgroundType(type);
-  if (!entry)
-    node[{"type"}].fail("unknown background type \"" + type + "\" (expected " +
-                        backgroundTypeList() + ")");
-  node.declare({"background " + entry->name, {&backgroundCommonKeys(), &entry->keys}});
-  std::unique_ptr<EnvironmentLight> light = entry->build(node);
+  const BackgroundType& entry = backgroundTypes().get(node[{"type"}]);
+  node.declare({"background " + entry.name, {&backgroundCommonKeys(), &entry.keys}});
+  std::unique_ptr<EnvironmentLight> light = entry.build(node);
   node.rejectUnknownKeys();
   return light;
 }
@@ -95,23 +86,20 @@ class SurfaceParser {
 
   void parse(const JsonNode& node, const Transform& parent) {
     if (!node.isObject()) node.fail("expected a surface object");
-    const std::string type = node.type();
+    const JsonNode type = node[{"type"}];
     const Transform toWorld = parent * parseOptionalTransform(node);
-    if (type == "group") {
+    if (typeNameKey(type.asString()) == "group") {
       node.declare({"surface group", {&surfaceCommonKeys(), &groupKeys()}});
-      const JsonNode children = node[{"children"}];
+      const JsonNode children = node[scene_keys::kChildren];
       if (!children.isArray()) children.fail("expected an array of surfaces");
       for (size_t i = 0; i < children.size(); ++i) parse(children[i], toWorld);
       node.rejectUnknownKeys();
       return;
     }
-    const ShapeType* entry = findShapeType(type);
-    if (!entry)
-      node[{"type"}].fail("unknown surface type \"" + type + "\" (expected " + shapeTypeList() +
-                          " or group)");
+    const ShapeType& entry = shapeTypes().get(type);
     node.declare(
-        {"surface " + entry->name, {&surfaceCommonKeys(), &shapeCommonKeys(), &entry->keys}});
-    std::unique_ptr<Shape> shape = entry->build(node, toWorld);
+        {"surface " + entry.name, {&surfaceCommonKeys(), &shapeCommonKeys(), &entry.keys}});
+    std::unique_ptr<Shape> shape = entry.build(node, toWorld);
     const Bounds3f bounds = shape->bounds();
     if (!withinExtent(bounds.lo) || !withinExtent(bounds.hi)) node.fail(kExtentProblem);
     auto material = materials_.reference(node[{"material"}]);
@@ -125,20 +113,22 @@ class SurfaceParser {
 };
 
 std::unique_ptr<Sampler> parseSampler(const JsonNode& root) {
-  auto node = root.find({"sampler"});
+  using namespace scene_keys;
+  auto node = root.find(kSampler);
   // An unknown type is left to makeSampler's error.
   if (node && node->isObject()) {
-    const std::string type = node->has({"type"}) ? node->type() : samplerTypes().front().name;
-    if (const SamplerType* entry = findSamplerType(type))
-      node->declare({"sampler " + entry->name, {&samplerCommonKeys(), &entry->keys}});
+    const SamplerType* entry = node->has({"type"})
+                                   ? samplerTypes().find((*node)[{"type"}].asString())
+                                   : &samplerTypes().front();
+    if (entry) node->declare({"sampler " + entry->name, {&samplerCommonKeys(), &entry->keys}});
   }
   auto sampler = makeSampler(node ? &*node : nullptr);
-  const int imageSamples = root.getInt({"image_samples"}, 1, 1, 1 << 24);
+  const int imageSamples = root.get(kImageSamples);
   int spp = imageSamples;
   if (node) {
-    if (auto samples = node->find({"samples"})) {
-      spp = samples->asInt(1, 1 << 24);
-      if (root.has({"image_samples"}) && spp != imageSamples)
+    if (auto samples = node->find(kSamples)) {
+      spp = node->get(kSamples);
+      if (root.find(kImageSamples) && spp != imageSamples)
         samples->fail("disagrees with \"image_samples\"; give the sample count once");
     }
     node->rejectUnknownKeys();
@@ -158,6 +148,7 @@ std::unique_ptr<Sampler> sceneSampler(const JsonNode& root, const std::string& o
 
 SceneFile build(const JsonNode& root, const std::filesystem::path& file,
                 const SceneOverrides& overrides) {
+  using namespace scene_keys;
   SceneFile result;
   result.name = file.stem().string();
   result.scene = std::make_unique<Scene>();
@@ -166,15 +157,15 @@ SceneFile build(const JsonNode& root, const std::filesystem::path& file,
   MaterialFactory materials(textures, result.warnings);
   root.declare({"the scene file", {&sceneKeys()}});
 
-  scene.setCamera(parseCamera(root[{"camera"}], overrides.width));
-  if (auto bg = root.find({"background"})) scene.setBackground(parseBackground(*bg, textures));
-  root.find({"accelerator"});  // DIRT's choice of accelerator: one serves all
-  auto integrator = root.find({"integrator"});
+  scene.setCamera(parseCamera(root[kCamera], overrides.width));
+  if (auto bg = root.find(kBackground)) scene.setBackground(parseBackground(*bg, textures));
+  root.find(kAccelerator);  // DIRT's choice of accelerator: one serves all
+  auto integrator = root.find(kIntegrator);
   result.integrator = overrideIntegrator(
       parseIntegratorSettings(integrator ? &*integrator : nullptr), overrides.integrator);
   result.sampler = sceneSampler(root, overrides.sampler);
 
-  if (auto list = root.find({"materials"})) {
+  if (auto list = root.find(kMaterials)) {
     if (!list->isArray()) list->fail("expected an array of materials");
     std::set<std::string> names;
     for (size_t i = 0; i < list->size(); ++i)
@@ -190,7 +181,7 @@ SceneFile build(const JsonNode& root, const std::filesystem::path& file,
       scene.addMaterial(material);
     }
   }
-  if (auto list = root.find({"surfaces"})) {
+  if (auto list = root.find(kSurfaces)) {
     if (!list->isArray()) list->fail("expected an array of surfaces");
     SurfaceParser surfaces(scene, materials);
     for (size_t i = 0; i < list->size(); ++i) surfaces.parse((*list)[i], Transform());

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "integrators/integrator_settings.h"
+#include "integrators/integrator_registry.h"
 #include "sampling/sampler.h"
 #include "scene/scene.h"
 

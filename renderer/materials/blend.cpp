@@ -45,41 +45,38 @@ std::optional<BsdfSample> Blend::sample(const TextureQuery& q, const Vector3f& w
 }
 
 namespace {
-KeyList blendKeys() {
-  return {{"a",
-           {},
-           ValueType::Material,
-           "a non-emitting material defined earlier in the file",
-           "required",
-           "the material weighted by 1 - amount: the name of a material listed earlier in "
-           "\"materials\", or an inline material object"},
-          {"b", {}, ValueType::Material, "as for a", "required", "the material weighted by amount"},
-          {"amount",
-           {},
-           ValueType::Texture,
-           "[0, 1]; a texture is clamped to it",
-           "0.5",
-           "the weight of b (the mean of the channels)"}};
-}
+const KeyDeclaration kBlendA{"a",
+                             {},
+                             ValueType::Material,
+                             "a non-emitting material defined earlier in the file",
+                             "required",
+                             "the material weighted by 1 - amount: the name of a material listed "
+                             "earlier in \"materials\", or an inline material object"};
+const KeyDeclaration kBlendB{"b",        {},         ValueType::Material,
+                             "as for a", "required", "the material weighted by amount"};
+const Key<TexturedColor> kAmount{.name = "amount",
+                                 .defaultValue = TexturedColor(Color3::Constant(0.5f)),
+                                 .allowed = "[0, 1]; a texture is clamped to it",
+                                 .meaning = "the weight of b (the mean of the channels)"};
 }  // namespace
 
 MaterialType blendType() {
   return {"blend",
           {},
           "(1 - amount)·a + amount·b",
-          blendKeys(),
+          declarations(kBlendA, kBlendB, kAmount),
           [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
-            auto a = f.reference(node[{"a"}]);
-            auto b = f.reference(node[{"b"}]);
-            for (const auto& [key, material] : {std::pair{"a", a.get()}, std::pair{"b", b.get()}})
+            auto a = f.reference(node[kBlendA]);
+            auto b = f.reference(node[kBlendB]);
+            for (const auto& [key, material] :
+                 {std::pair{&kBlendA, a.get()}, std::pair{&kBlendB, b.get()}})
               if (material->isEmitter())
-                node[{key}].fail(
+                node[*key].fail(
                     "a blend cannot contain an emitter: only a surface whose material is a "
                     "\"diffuse light\" emits; give the light its own surface");
-            TexturedColor amount =
-                f.textures().parse(node, {"amount"}, Color3::Constant(0.5f), "the blend amount");
+            TexturedColor amount = f.textures().parse(node, kAmount, "the blend amount");
             if (amount.isConstant() && !(amount.constant() <= 1).all())
-              node[{"amount"}].fail("the blend amount must lie in [0, 1]");
+              node[kAmount].fail("the blend amount must lie in [0, 1]");
             return std::make_shared<Blend>(std::move(a), std::move(b), std::move(amount));
           }};
 }

@@ -3,7 +3,6 @@
 #include "materials/fresnel.h"
 #include "materials/material_factory.h"
 #include "materials/material_keys.h"
-#include "materials/material_params.h"
 #include "materials/sample_util.h"
 #include "sampling/warp.h"
 
@@ -41,16 +40,12 @@ MaterialType blinnPhongType() {
   return {"blinnphong",
           {"blinn_phong", "blinn-phong"},
           "normalised Blinn-Phong lobe",
-          {albedoKey("the reflected fraction of light, at most"),
-           {"exponent",
-            {},
-            ValueType::Number,
-            kExponentRange.interval(),
-            "10",
-            "the lobe's sharpness: cos^exponent of the half vector's angle to the normal"}},
+          declarations(kAlbedo.described("the reflected fraction of light, at most"),
+                       kExponent.described("the lobe's sharpness: cos^exponent of the half "
+                                           "vector's angle to the normal")),
           [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
             TexturedColor albedo = f.parseAlbedo(node);
-            const float exponent = node.getFloat({"exponent"}, 10.0f, kExponentRange);
+            const float exponent = node.get(kExponent);
             return std::make_shared<BlinnPhong>(std::move(albedo), exponent);
           }};
 }

@@ -2,7 +2,7 @@
 
 #include "materials/fresnel.h"
 #include "materials/material_factory.h"
-#include "materials/material_params.h"
+#include "materials/material_keys.h"
 
 namespace verity {
 
@@ -36,14 +36,9 @@ MaterialType dielectricType() {
   return {"dielectric",
           {},
           "smooth glass, a delta reflection and refraction",
-          {{"ior",
-            {},
-            ValueType::Number,
-            kIorRange.interval(),
-            "1.5",
-            "index of refraction inside (behind the normal) over outside"}},
+          declarations(kIor),
           [](MaterialFactory&, const JsonNode& node) -> std::shared_ptr<const Material> {
-            return std::make_shared<Dielectric>(node.getFloat({"ior"}, 1.5f, kIorRange));
+            return std::make_shared<Dielectric>(node.get(kIor));
           }};
 }
 

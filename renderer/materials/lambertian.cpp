@@ -33,7 +33,7 @@ MaterialType lambertianType() {
   return {"lambertian",
           {},
           "ideal diffuse reflection",
-          {albedoKey("the fraction of light reflected")},
+          declarations(kAlbedo),
           [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
             return std::make_shared<Lambertian>(f.parseAlbedo(node));
           }};

@@ -2,15 +2,16 @@
 
 #include <fmt/format.h>
 
+#include "materials/material_keys.h"
 #include "materials/material_registry.h"
 
 namespace verity {
 
 TexturedColor MaterialFactory::parseAlbedo(const JsonNode& node) {
-  TexturedColor albedo = textures_.parse(node, {"albedo"}, Color3::Constant(0.8f));
+  TexturedColor albedo = textures_.parse(node, kAlbedo);
   const float bound = albedo.upperBound();
   if (bound > 1)
-    warn(node[{"albedo"}].warning(fmt::format(
+    warn(node[kAlbedo].warning(fmt::format(
         "{} {:g}, above 1: the surface reflects more light than reaches it (a white furnace "
         "would gain energy)",
         albedo.isConstant() ? "an albedo of" : "a texture that reaches", bound)));
@@ -18,14 +19,10 @@ TexturedColor MaterialFactory::parseAlbedo(const JsonNode& node) {
 }
 
 std::shared_ptr<const Material> MaterialFactory::make(const JsonNode& node) {
-  const std::string type = node.type();
   node.find({"name"});  // the name is read by the scene loader
-  const MaterialType* entry = findMaterialType(type);
-  if (!entry)
-    node[{"type"}].fail(
-        fmt::format("unknown material type \"{}\" (known types: {})", type, materialTypeList()));
-  node.declare({"material " + entry->name, {&materialCommonKeys(), &entry->keys}});
-  std::shared_ptr<const Material> material = entry->build(*this, node);
+  const MaterialType& entry = materialTypes().get(node[{"type"}]);
+  node.declare({"material " + entry.name, {&materialCommonKeys(), &entry.keys}});
+  std::shared_ptr<const Material> material = entry.build(*this, node);
   node.rejectUnknownKeys();
   return material;
 }

@@ -31,7 +31,7 @@ class MaterialFactory {
   std::shared_ptr<const Material> reference(const JsonNode& node);
 
   // For the types' build functions:
-  // The "albedo" member (0.8 when absent), with a warning when it can exceed 1.
+  // The "albedo" member (kAlbedo), with a warning when it can exceed 1.
   TexturedColor parseAlbedo(const JsonNode& node);
   TextureFactory& textures() { return textures_; }
   void warn(VerityError warning) { warnings_.push_back(std::move(warning)); }

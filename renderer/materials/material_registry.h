@@ -7,19 +7,17 @@
 #include <vector>
 
 #include "materials/material_type.h"
+#include "params/registry.h"
 
 namespace verity {
 
 // In the order of the table in material_registry.cpp.
-const std::vector<MaterialType>& materialTypes();
+const Registry<MaterialType>& materialTypes();
 // The keys every material object takes besides its type's: "type" and "name".
 const KeyList& materialCommonKeys();
-// The type with this name or alias (lower case, as JsonNode::type() gives it); null if none.
-const MaterialType* findMaterialType(const std::string& spelling);
-// "lambertian, diffuse_light, ...": the canonical names, for error messages.
-std::string materialTypeList();
-// One line per type: its names (aliases in parentheses), its description and its keys with
-// their defaults.
-std::string materialTypeHelp();
+// The table's lookup, as the suites outside the renderer spell it.
+inline const MaterialType* findMaterialType(std::string_view spelling) {
+  return materialTypes().find(spelling);
+}
 
 }  // namespace verity

@@ -21,7 +21,7 @@ struct MaterialType {
   // Reads the type's keys from `node`; the factory supplies albedos, textures, named
   // materials and warnings. Unknown keys are rejected by the factory afterwards.
   using Build = std::shared_ptr<const Material> (*)(MaterialFactory& factory, const JsonNode& node);
-  std::string name;                  // lower case, as JsonNode::type() returns it
+  std::string name;                  // canonical; looked up by the rule of params/registry.h
   std::vector<std::string> aliases;  // other spellings of the same type
   std::string description;           // one line: what it is
   KeyList keys;                      // besides "type" and "name" (materialCommonKeys())

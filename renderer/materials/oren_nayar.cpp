@@ -44,22 +44,19 @@ std::optional<BsdfSample> OrenNayar::sample(const TextureQuery& q, const Vector3
 
 // The facets' slope deviation in radians: beyond π/2 a deviation of facet angles means
 // nothing (the model's A and B have long saturated).
-constexpr Range kSigmaRange{0.0f, kPi / 2};
+const Key<float> kSigma{.name = "sigma",
+                        .defaultValue = 0.35f,
+                        .allowed = {0.0f, kPi / 2},
+                        .meaning = "standard deviation of the facets' slope angle, in radians"};
 
 MaterialType orenNayarType() {
   return {"oren-nayar",
           {"oren_nayar"},
           "rough diffuse reflection",
-          {albedoKey("the reflectance of the facets"),
-           {"sigma",
-            {},
-            ValueType::Number,
-            kSigmaRange.interval(),
-            "0.35",
-            "standard deviation of the facets' slope angle, in radians"}},
+          declarations(kAlbedo.described("the reflectance of the facets"), kSigma),
           [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
             TexturedColor albedo = f.parseAlbedo(node);
-            const float sigma = node.getFloat({"sigma"}, 0.35f, kSigmaRange);
+            const float sigma = node.get(kSigma);
             return std::make_shared<OrenNayar>(std::move(albedo), sigma);
           }};
 }

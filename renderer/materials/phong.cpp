@@ -3,7 +3,6 @@
 #include "core/frame.h"
 #include "materials/material_factory.h"
 #include "materials/material_keys.h"
-#include "materials/material_params.h"
 #include "materials/sample_util.h"
 #include "sampling/warp.h"
 
@@ -45,16 +44,12 @@ MaterialType phongType() {
   return {"phong",
           {},
           "normalised modified Phong lobe",
-          {albedoKey("the reflected fraction of light, at most"),
-           {"exponent",
-            {},
-            ValueType::Number,
-            kExponentRange.interval(),
-            "10",
-            "the lobe's sharpness: cos^exponent about the mirror direction"}},
+          declarations(
+              kAlbedo.described("the reflected fraction of light, at most"),
+              kExponent.described("the lobe's sharpness: cos^exponent about the mirror direction")),
           [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
             TexturedColor albedo = f.parseAlbedo(node);
-            const float exponent = node.getFloat({"exponent"}, 10.0f, kExponentRange);
+            const float exponent = node.get(kExponent);
             return std::make_shared<Phong>(std::move(albedo), exponent);
           }};
 }

@@ -5,7 +5,6 @@
 #include "materials/fresnel.h"
 #include "materials/material_factory.h"
 #include "materials/material_keys.h"
-#include "materials/material_params.h"
 #include "materials/mirror.h"
 #include "materials/named_conductors.h"
 #include "materials/sample_util.h"
@@ -74,9 +73,27 @@ namespace {
 // The complex index η + iκ: "conductor", a name from named_conductors.h, or "ior" (η) and
 // "ext" (κ), each a number or an RGB triple, by default 0.05 + 3.9i. Stating both a name
 // and an index is an error rather than a precedence rule: one of them would be ignored.
+const Key<Color3> kEta{
+    .name = "ior",
+    .defaultValue = Color3::Constant(0.05f),
+    .allowed = kIorRange,
+    .meaning = "η, the real part of the complex index of refraction; not with \"conductor\""};
+const Key<Color3> kExtinction{
+    .name = "ext",
+    .defaultValue = Color3::Constant(3.9f),
+    .allowed = kExtinctionRange,
+    .meaning = "κ, the imaginary part (extinction) of the complex index; not with \"conductor\""};
+// Read only when given: it replaces "ior" and "ext".
+const Key<std::string> kConductor{
+    .name = "conductor",
+    .allowed = namedConductorList(),
+    .meaning = "a measured metal's index at 650, 550 and 450 nm, instead of \"ior\" and \"ext\"",
+    .defaultText = "none (ior and ext)"};
+const Key<float> kConductorAlpha = alphaKey("ab", "alpha", 0.5f);
+
 void parseConductorIndex(const JsonNode& node, RoughConductor::Params& p) {
-  if (auto name = node.find({"conductor"})) {
-    if (node.has({"ior"}) || node.has({"ext"}))
+  if (auto name = node.find(kConductor)) {
+    if (node.find(kEta) || node.find(kExtinction))
       name->fail("\"conductor\" and \"ior\"/\"ext\" both give the index; keep one");
     const NamedConductor* c = findNamedConductor(name->asString());
     if (!c)
@@ -86,10 +103,8 @@ void parseConductorIndex(const JsonNode& node, RoughConductor::Params& p) {
     p.k = c->k;
     return;
   }
-  const auto eta = node.find({"ior"});
-  const auto k = node.find({"ext"});
-  p.eta = eta ? Color3(eta->asVector3(kIorRange).array()) : Color3::Constant(0.05f);
-  p.k = k ? Color3(k->asVector3(kExtinctionRange).array()) : Color3::Constant(3.9f);
+  p.eta = node.get(kEta);
+  p.k = node.get(kExtinction);
 }
 
 // DIRT's "beckmann" and the seed's "ggx": α given directly, the complex Fresnel term.
@@ -97,36 +112,18 @@ std::shared_ptr<const Material> buildComplexConductor(MicrofacetType type, Mater
                                                       const JsonNode& node) {
   RoughConductor::Params p;
   p.distribution = type;
-  p.sampling = parseSampling(node);
+  p.sampling = node.get(kSampling);
   p.albedo = f.parseAlbedo(node);
-  p.roughness = TexturedColor(Color3::Constant(node.getFloat({"ab", "alpha"}, 0.5f, kAlphaRange)));
+  p.roughness = TexturedColor(Color3::Constant(node.get(kConductorAlpha)));
   parseConductorIndex(node, p);
   return std::make_shared<RoughConductor>(std::move(p));
 }
 
 // The keys of "beckmann" and "ggx".
 KeyList complexConductorKeys() {
-  return {albedoKey("a tint on the Fresnel reflectance: 1 for the metal as measured"),
-          alphaKey("ab", "alpha", "0.5"),
-          {"ior",
-           {},
-           ValueType::Rgb,
-           kIorRange.interval() + " per channel",
-           "0.05",
-           "η, the real part of the complex index of refraction; not with \"conductor\""},
-          {"ext",
-           {},
-           ValueType::Rgb,
-           kExtinctionRange.interval() + " per channel",
-           "3.9",
-           "κ, the imaginary part (extinction) of the complex index; not with \"conductor\""},
-          {"conductor",
-           {},
-           ValueType::String,
-           namedConductorList(),
-           "none (ior and ext)",
-           "a measured metal's index at 650, 550 and 450 nm, instead of \"ior\" and \"ext\""},
-          samplingKey()};
+  return declarations(
+      kAlbedo.described("a tint on the Fresnel reflectance: 1 for the metal as measured"),
+      kConductorAlpha, kEta, kExtinction, kConductor, kSampling);
 }
 
 }  // namespace
@@ -151,44 +148,47 @@ MaterialType ggxType() {
           }};
 }
 
+namespace {
+
+const Key<TexturedColor> kMetalRoughness{
+    .name = "roughness",
+    .defaultValue = TexturedColor(Color3::Zero()),
+    .allowed = "0 (a mirror) or [0.01, 2]; a texture at most 2",
+    .meaning = "√α: the GGX roughness is its square (the mean of the channels)"};
+
+}  // namespace
+
 MaterialType metalType() {
   return {"metal",
           {},
           "DIRT's metal: a mirror at roughness 0, else GGX with alpha = roughness² and Schlick's "
           "Fresnel with F0 = albedo",
-          {albedoKey("the reflectance at normal incidence (Schlick's F0)"),
-           {"roughness",
-            {},
-            ValueType::Texture,
-            "0 (a mirror) or [0.01, 2]; a texture at most 2",
-            "0",
-            "√α: the GGX roughness is its square (the mean of the channels)"},
-           samplingKey()},
+          declarations(kAlbedo.described("the reflectance at normal incidence (Schlick's F0)"),
+                       kMetalRoughness, kSampling),
           [](MaterialFactory& f, const JsonNode& node) -> std::shared_ptr<const Material> {
             TexturedColor albedo = f.parseAlbedo(node);
             // A negative constant is refused by the texture factory (a texture is clamped at
             // lookup).
-            TexturedColor roughness =
-                f.textures().parse(node, {"roughness"}, Color3::Zero(), "roughness");
+            TexturedColor roughness = f.textures().parse(node, kMetalRoughness, "roughness");
             // α = roughness² must lie in kAlphaRange (roughness in [0.01, 2]), or be 0 (a mirror).
             if (roughness.isConstant()) {
               const Color3 r = roughness.constant();
               if (!(r == 0).all() && !(r >= 0.01f && r <= 2.0f).all())
-                node[{"roughness"}].fail(
+                node[kMetalRoughness].fail(
                     "roughness must be 0 (a mirror) or in [0.01, 2] (alpha = roughness² in [1e-4, "
                     "4])");
             }
             // A texture can only be bounded above here; its values below 0.01 act as 0.01 (the
             // microfacet distribution's smallest α).
             if (!roughness.isConstant() && roughness.upperBound() > 2)
-              node[{"roughness"}].fail(fmt::format(
+              node[kMetalRoughness].fail(fmt::format(
                   "a roughness texture that reaches {:g}, above 2 (alpha = roughness² above 4)",
                   roughness.upperBound()));
             if (roughness.isConstant() && roughness.constant().mean() == 0)
               return std::make_shared<Mirror>(std::move(albedo));
             RoughConductor::Params p;
             p.distribution = MicrofacetType::GGX;
-            p.sampling = parseSampling(node);
+            p.sampling = node.get(kSampling);
             p.albedo = std::move(albedo);
             p.roughness = std::move(roughness);
             p.squareRoughness = true;

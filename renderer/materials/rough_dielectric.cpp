@@ -4,7 +4,6 @@
 #include "materials/fresnel.h"
 #include "materials/material_factory.h"
 #include "materials/material_keys.h"
-#include "materials/material_params.h"
 #include "materials/sample_util.h"
 
 namespace verity {
@@ -116,24 +115,21 @@ std::optional<BsdfSample> RoughDielectric::sample(const TextureQuery& q, const V
   return makeSample(wo, eval(q, wi, wo, mode), pdf(q, wi, wo), lobe, eta);
 }
 
+namespace {
+
+const Key<float> kRoughDielectricAlpha = alphaKey("alpha", "ab", 0.1f);
+
+}  // namespace
+
 MaterialType roughDielectricType() {
   return {"rough_dielectric",
           {"rough dielectric", "roughdielectric"},
           "rough glass (Walter et al. 2007)",
-          {distributionKey(),
-           alphaKey("alpha", "ab", "0.1"),
-           {"ior",
-            {},
-            ValueType::Number,
-            kIorRange.interval(),
-            "1.5",
-            "index of refraction inside (behind the normal) over outside"},
-           samplingKey()},
+          declarations(kDistribution, kRoughDielectricAlpha, kIor, kSampling),
           [](MaterialFactory&, const JsonNode& node) -> std::shared_ptr<const Material> {
-            const MicrofacetType distribution = parseDistribution(node);
-            const float alpha = node.getFloat({"alpha", "ab"}, 0.1f, kAlphaRange);
-            const float ior = node.getFloat({"ior"}, 1.5f, kIorRange);
-            return std::make_shared<RoughDielectric>(distribution, alpha, ior, parseSampling(node));
+            return std::make_shared<RoughDielectric>(node.get(kDistribution),
+                                                     node.get(kRoughDielectricAlpha),
+                                                     node.get(kIor), node.get(kSampling));
           }};
 }
 

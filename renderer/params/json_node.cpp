@@ -122,6 +122,14 @@ class DuplicateKeyFinder {
 
 }  // namespace
 
+std::string numberText(float v) {
+  if (std::isinf(v)) return v > 0 ? "infinite" : "-infinite";
+  if (std::abs(v) < 1e7f) return fmt::format("{}", v);
+  std::string text = fmt::format("{:g}", v);
+  if (const size_t e = text.find("e+"); e != std::string::npos) text.erase(e + 1, 1);
+  return text;
+}
+
 bool Range::contains(float v) const {
   if (!std::isfinite(v)) return false;
   if (loOpen ? v <= lo : v < lo) return false;
@@ -137,9 +145,20 @@ std::string Range::describe() const {
 
 std::string Range::interval() const {
   if (lo == -kInfinity && hi == kInfinity) return "finite";
-  if (hi == kInfinity) return fmt::format("{} {}", loOpen ? ">" : ">=", lo);
-  if (lo == -kInfinity) return fmt::format("{} {}", hiOpen ? "<" : "<=", hi);
-  return fmt::format("{}{}, {}{}", loOpen ? "(" : "[", lo, hi, hiOpen ? ")" : "]");
+  if (hi == kInfinity) return fmt::format("{} {}", loOpen ? ">" : ">=", numberText(lo));
+  if (lo == -kInfinity) return fmt::format("{} {}", hiOpen ? "<" : "<=", numberText(hi));
+  return fmt::format("{}{}, {}{}", loOpen ? "(" : "[", numberText(lo), numberText(hi),
+                     hiOpen ? ")" : "]");
+}
+
+std::string IntRange::describe() const {
+  return "an integer " + std::string(hi == std::numeric_limits<int>::max() ? "" : "in ") +
+         interval();
+}
+
+std::string IntRange::interval() const {
+  if (hi == std::numeric_limits<int>::max()) return fmt::format(">= {}", lo);
+  return fmt::format("[{}, {}]", lo, hi);
 }
 
 JsonNode::JsonNode(std::shared_ptr<const nlohmann::json> root, const nlohmann::json* value,
@@ -203,18 +222,18 @@ std::filesystem::path JsonNode::resolve(const std::string& name) const {
   return source_->file.parent_path() / p;
 }
 
-void JsonNode::checkDeclared(Keys keys) const {
+void JsonNode::checkDeclared(const std::vector<std::string>& spellings) const {
   const auto it = source_->declared.find(value_);
   if (it == source_->declared.end()) return;
-  const KeyDeclaration* key = it->second.find(*keys.begin());
-  bool same = key && keys.size() == 1 + key->aliases.size();
-  for (const char* spelling : keys) same = same && it->second.find(spelling) == key;
+  const KeyDeclaration* key = it->second.find(spellings.front());
+  bool same = key && spellings.size() == 1 + key->aliases.size();
+  for (const std::string& spelling : spellings) same = same && it->second.find(spelling) == key;
   if (!same)
     throw std::logic_error(fmt::format(
         "{}: {}: the reader of {} asks for \"{}\" ({} spellings), which its key declaration "
         "does not list as one key with exactly these spellings",
         source_->file.string(), path_.empty() ? "(top level)" : path_, it->second.what,
-        *keys.begin(), keys.size()));
+        spellings.front(), spellings.size()));
 }
 
 void JsonNode::declare(DeclaredKeys keys) const {
@@ -228,35 +247,51 @@ void JsonNode::declare(DeclaredKeys keys) const {
                       source_->file.string(), path_, read, declared.what));
 }
 
-const char* JsonNode::resolveKey(Keys keys) const {
+const std::string* JsonNode::resolveKey(const std::vector<std::string>& spellings) const {
   if (!value_->is_object()) fail("expected an object, found " + typeName(*value_));
-  checkDeclared(keys);
-  const char* found = nullptr;
-  for (const char* key : keys) {
+  checkDeclared(spellings);
+  const std::string* found = nullptr;
+  for (const std::string& key : spellings) {
     if (value_->contains(key)) {
       if (found)
-        fail(fmt::format("both \"{}\" and \"{}\" are given; they are spellings of one key", found,
+        fail(fmt::format("both \"{}\" and \"{}\" are given; they are spellings of one key", *found,
                          key));
-      found = key;
+      found = &key;
     }
   }
-  if (found) source_->used[value_].insert(found);
+  if (found) source_->used[value_].insert(*found);
   return found;
 }
 
+namespace {
+std::vector<std::string> spelled(Keys keys) {
+  return {keys.begin(), keys.end()};
+}
+}  // namespace
+
 bool JsonNode::has(Keys keys) const {
-  return resolveKey(keys) != nullptr;
+  return resolveKey(spelled(keys)) != nullptr;
 }
 
 std::optional<JsonNode> JsonNode::find(Keys keys) const {
-  const char* key = resolveKey(keys);
+  return find(spelled(keys));
+}
+
+std::optional<JsonNode> JsonNode::find(const std::vector<std::string>& spellings) const {
+  const std::string* key = resolveKey(spellings);
   if (!key) return std::nullopt;
-  return JsonNode(root_, &(*value_)[key], path_.empty() ? key : path_ + "." + key, source_);
+  return JsonNode(root_, &(*value_)[*key], path_.empty() ? *key : path_ + "." + *key, source_);
 }
 
 JsonNode JsonNode::operator[](Keys keys) const {
   auto node = find(keys);
   if (!node) fail(fmt::format("missing required key \"{}\"", *keys.begin()));
+  return *node;
+}
+
+JsonNode JsonNode::operator[](const KeyDeclaration& key) const {
+  auto node = find(key);
+  if (!node) fail(fmt::format("missing required key \"{}\"", key.name));
   return *node;
 }
 
@@ -280,7 +315,7 @@ int JsonNode::asInt(int lo, int hi) const {
   const double v = value_->get<double>();
   if (v != std::floor(v)) fail(fmt::format("expected an integer, found {}", value_->dump()));
   if (v < lo || v > hi)
-    fail(fmt::format("expected an integer in [{}, {}], found {}", lo, hi, value_->dump()));
+    fail(fmt::format("expected {}, found {}", IntRange{lo, hi}.describe(), value_->dump()));
   return static_cast<int>(v);
 }
 
@@ -302,30 +337,6 @@ Vector2i JsonNode::asVector2i(int lo, int hi) const {
     fail("expected an array of 2 integers, found " +
          (value_->is_array() ? fmt::format("an array of {}", value_->size()) : typeName(*value_)));
   return {(*this)[0].asInt(lo, hi), (*this)[1].asInt(lo, hi)};
-}
-
-float JsonNode::getFloat(Keys keys, float def, Range range) const {
-  auto node = find(keys);
-  return node ? node->asFloat(range) : def;
-}
-
-int JsonNode::getInt(Keys keys, int def, int lo, int hi) const {
-  auto node = find(keys);
-  return node ? node->asInt(lo, hi) : def;
-}
-
-std::string JsonNode::getString(Keys keys) const {
-  return (*this)[keys].asString();
-}
-
-std::string JsonNode::getString(Keys keys, const std::string& def) const {
-  auto node = find(keys);
-  return node ? node->asString() : def;
-}
-
-Vector3f JsonNode::getVector3(Keys keys, const Vector3f& def) const {
-  auto node = find(keys);
-  return node ? node->asVector3() : def;
 }
 
 std::string JsonNode::type() const {

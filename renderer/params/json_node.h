@@ -6,12 +6,14 @@
 
 #include <filesystem>
 #include <initializer_list>
+#include <limits>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "core/error.h"
 #include "core/math.h"
@@ -22,15 +24,31 @@ namespace verity {
 // Accepted spellings of one key; the first is the canonical one used in messages.
 using Keys = std::initializer_list<const char*>;
 
+template <class T>
+struct Key;
+
+// A number as errors and the documents write it: its shortest exact form, with large powers
+// as "1e15"; "infinite" for infinity.
+std::string numberText(float v);
+
 struct Range {
   float lo = -kInfinity, hi = kInfinity;
   bool loOpen = false, hiOpen = false;
 
   static Range any() { return {}; }
   static Range positive() { return {0.0f, kInfinity, true, false}; }
+  static Range nonNegative() { return {0.0f, kInfinity, false, false}; }
   bool contains(float v) const;
   std::string describe() const;  // "a number in (0, 100]"
   std::string interval() const;  // "(0, 100]", "> 0", "finite": for key declarations
+  bool operator==(const Range&) const = default;
+};
+
+// The integers allowed: [lo, hi].
+struct IntRange {
+  int lo = std::numeric_limits<int>::min(), hi = std::numeric_limits<int>::max();
+  std::string describe() const;  // "an integer in [0, 16]", "an integer >= 1"
+  std::string interval() const;  // "[0, 16]", ">= 1": for key declarations
 };
 
 class JsonNode {
@@ -58,6 +76,23 @@ class JsonNode {
   JsonNode operator[](Keys keys) const;  // required member
   std::optional<JsonNode> find(Keys keys) const;
   JsonNode operator[](size_t index) const;
+  // The member spelled one of `spellings` (the canonical spelling first), or the key declared:
+  // a key whose value another reader reads (an object, a texture, a material).
+  std::optional<JsonNode> find(const std::vector<std::string>& spellings) const;
+  std::optional<JsonNode> find(const KeyDeclaration& key) const { return find(key.spellings()); }
+  JsonNode operator[](const KeyDeclaration& key) const;  // required member
+  template <class T>
+  std::optional<JsonNode> find(const Key<T>& key) const {
+    return find(key.spellings());
+  }
+  template <class T>
+  JsonNode operator[](const Key<T>& key) const {
+    return (*this)[key.declaration()];
+  }
+  // The value of a typed key (params/key.h defines it): its default when absent; an error
+  // naming the path when it is missing and required, or outside the values allowed.
+  template <class T>
+  T get(const Key<T>& key) const;
 
   // Typed reads of this value.
   float asFloat(Range range = Range::any()) const;
@@ -66,13 +101,6 @@ class JsonNode {
   // A number fills all three components; each component must lie in `range`.
   Vector3f asVector3(Range range = Range::any()) const;
   Vector2i asVector2i(int lo, int hi) const;
-
-  // Typed reads of a member, with a default when absent.
-  float getFloat(Keys keys, float def, Range range = Range::any()) const;
-  int getInt(Keys keys, int def, int lo, int hi) const;
-  std::string getString(Keys keys) const;
-  std::string getString(Keys keys, const std::string& def) const;
-  Vector3f getVector3(Keys keys, const Vector3f& def) const;
 
   // The object's "type", lower-cased, with spaces, hyphens and underscores kept as given.
   std::string type() const;
@@ -92,10 +120,11 @@ class JsonNode {
     // The declared keys of the objects whose type declares them.
     mutable std::map<const nlohmann::json*, DeclaredKeys> declared;
   };
-  void checkDeclared(Keys keys) const;
+  void checkDeclared(const std::vector<std::string>& spellings) const;
   JsonNode(std::shared_ptr<const nlohmann::json> root, const nlohmann::json* value,
            std::string path, std::shared_ptr<const Source> source);
-  const char* resolveKey(Keys keys) const;
+  // The spelling among `spellings` that the object gives, or null.
+  const std::string* resolveKey(const std::vector<std::string>& spellings) const;
 
   std::shared_ptr<const nlohmann::json> root_;
   const nlohmann::json* value_;

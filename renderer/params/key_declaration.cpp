@@ -36,6 +36,12 @@ const char* valueTypeText(ValueType type) {
   return "";
 }
 
+std::vector<std::string> KeyDeclaration::spellings() const {
+  std::vector<std::string> all{name};
+  all.insert(all.end(), aliases.begin(), aliases.end());
+  return all;
+}
+
 const KeyDeclaration* DeclaredKeys::find(const std::string& spelling) const {
   for (const KeyList* list : lists)
     for (const KeyDeclaration& key : *list)

@@ -36,6 +36,8 @@ struct KeyDeclaration {
   std::string range;         // the values allowed; empty when the value type says it all
   std::string defaultValue;  // "required" when the key must be given
   std::string meaning;
+  // The canonical spelling, then the aliases.
+  std::vector<std::string> spellings() const;
 };
 
 using KeyList = std::vector<KeyDeclaration>;

@@ -1,15 +1,57 @@
 #include "params/transform_parser.h"
 
+#include "params/key.h"
+
 namespace verity {
 
 namespace {
+
+// Each key is declared once: parseOne reads it by this object, and transformKeys() lists it.
+const Key<Vector3f> kFrom{
+    .name = "from", .defaultValue = Vector3f(0, 0, 1), .meaning = "look-at: the eye point"};
+const Key<Vector3f> kAt{.name = "at",
+                        .aliases = {"to"},
+                        .defaultValue = Vector3f::Zero(),
+                        .meaning = "look-at: the point the local -z axis is turned towards",
+                        .alsoAllowed = "not \"from\""};
+const Key<Vector3f> kUp{.name = "up",
+                        .defaultValue = Vector3f::UnitY(),
+                        .meaning = "look-at: the direction that local +y leans towards",
+                        .alsoAllowed = "not zero, not along at - from"};
+const Key<Vector3f> kOrigin{
+    .name = "o", .defaultValue = Vector3f::Zero(), .meaning = "frame: where the local origin goes"};
+const Key<Vector3f> kAxisX{
+    .name = "x", .defaultValue = Vector3f::UnitX(), .meaning = "frame: where local x goes"};
+const Key<Vector3f> kAxisY{
+    .name = "y", .defaultValue = Vector3f::UnitY(), .meaning = "frame: where local y goes"};
+const Key<Vector3f> kAxisZ{
+    .name = "z", .defaultValue = Vector3f::UnitZ(), .meaning = "frame: where local z goes"};
+// The keys below are read only when given: "—" or "required with ..." is their default.
+const Key<Vector3f> kTranslate{.name = "translate", .meaning = "a translation", .defaultText = "—"};
+const Key<Vector3f> kScale{.name = "scale",
+                           .meaning = "a scale along the axes (one number: uniform)",
+                           .defaultText = "—",
+                           .alsoAllowed = "no component 0"};
+const Key<Vector3f> kAxis{.name = "axis",
+                          .meaning = "rotation: the axis (through the origin)",
+                          .defaultText = "required with angle",
+                          .alsoAllowed = "not zero"};
+const Key<float> kAngle{.name = "angle",
+                        .meaning =
+                            "rotation: the angle in degrees, right-handed "
+                            "(counter-clockwise seen from the axis's tip)",
+                        .defaultText = "required with axis"};
+const KeyDeclaration kMatrix{
+    "matrix",          {}, ValueType::Array, "16 numbers, row-major, last row [0, 0, 0, 1]", "—",
+    "an affine matrix"};
+
 Matrix4f lookAt(const Vector3f& from, const Vector3f& at, const Vector3f& up,
                 const JsonNode& node) {
   // Stable norms: a far-away camera must reach the extent check, not overflow to a zero axis.
   const Vector3f dir = at - from;
   if (!(dir.stableNorm() > 0)) node.fail("\"from\" and \"at\" are the same point");
   const Vector3f z = -dir.stableNormalized();  // the camera looks down −z
-  if (!(up.stableNorm() > 0)) node[{"up"}].fail("\"up\" must not be the zero vector");
+  if (!(up.stableNorm() > 0)) node[kUp].fail("\"up\" must not be the zero vector");
   const Vector3f xRaw = up.stableNormalized().cross(z);
   if (!(xRaw.norm() > 1e-12f)) node.fail("\"up\" is parallel to the viewing direction");
   const Vector3f x = xRaw.normalized();
@@ -27,42 +69,39 @@ Matrix4f parseOne(const JsonNode& node) {
   node.declare({"a transform", {&transformKeys()}});
   Matrix4f m = Matrix4f::Identity();
   int forms = 0;
-  if (node.has({"from"}) || node.has({"at", "to"}) || node.has({"up"})) {
+  if (node.find(kFrom) || node.find(kAt) || node.find(kUp)) {
     ++forms;
-    m = lookAt(node.getVector3({"from"}, Vector3f(0, 0, 1)),
-               node.getVector3({"at", "to"}, Vector3f::Zero()),
-               node.getVector3({"up"}, Vector3f::UnitY()), node);
+    m = lookAt(node.get(kFrom), node.get(kAt), node.get(kUp), node);
   }
-  if (node.has({"o"}) || node.has({"x"}) || node.has({"y"}) || node.has({"z"})) {
+  if (node.find(kOrigin) || node.find(kAxisX) || node.find(kAxisY) || node.find(kAxisZ)) {
     ++forms;
     // Missing axes default to the identity's.
-    m.block<3, 1>(0, 0) = node.getVector3({"x"}, Vector3f::UnitX());
-    m.block<3, 1>(0, 1) = node.getVector3({"y"}, Vector3f::UnitY());
-    m.block<3, 1>(0, 2) = node.getVector3({"z"}, Vector3f::UnitZ());
-    m.block<3, 1>(0, 3) = node.getVector3({"o"}, Vector3f::Zero());
+    m.block<3, 1>(0, 0) = node.get(kAxisX);
+    m.block<3, 1>(0, 1) = node.get(kAxisY);
+    m.block<3, 1>(0, 2) = node.get(kAxisZ);
+    m.block<3, 1>(0, 3) = node.get(kOrigin);
   }
-  if (node.has({"translate"})) {
+  if (node.find(kTranslate)) {
     ++forms;
-    m.block<3, 1>(0, 3) = node.getVector3({"translate"}, Vector3f::Zero());
+    m.block<3, 1>(0, 3) = node.get(kTranslate);
   }
-  if (node.has({"scale"})) {
+  if (node.find(kScale)) {
     ++forms;
-    const Vector3f s = node.getVector3({"scale"}, Vector3f::Ones());
-    if ((s.array() == 0).any())
-      node[{"scale"}].fail("a scale of zero makes the transform singular");
+    const Vector3f s = node.get(kScale);
+    if ((s.array() == 0).any()) node[kScale].fail("a scale of zero makes the transform singular");
     m.topLeftCorner<3, 3>() = s.asDiagonal();
   }
-  if (node.has({"axis"}) || node.has({"angle"})) {
+  if (node.find(kAxis) || node.find(kAngle)) {
     ++forms;
-    const Vector3f axis = node[{"axis"}].asVector3();
-    const float angle = node[{"angle"}].asFloat();
-    if (!(axis.norm() > 0)) node[{"axis"}].fail("the rotation axis must not be zero");
+    const Vector3f axis = node.get(kAxis);
+    const float angle = node.get(kAngle);
+    if (!(axis.norm() > 0)) node[kAxis].fail("the rotation axis must not be zero");
     m.topLeftCorner<3, 3>() =
         Eigen::AngleAxisf(degToRad(angle), axis.normalized()).toRotationMatrix();
   }
-  if (node.has({"matrix"})) {
+  if (node.find(kMatrix)) {
     ++forms;
-    const JsonNode mat = node[{"matrix"}];
+    const JsonNode mat = node[kMatrix];
     if (!mat.isArray() || mat.size() != 16) mat.fail("expected an array of 16 numbers (row-major)");
     for (int i = 0; i < 16; ++i) m(i / 4, i % 4) = mat[i].asFloat();
     // Points, directions and normals are transformed affinely; a projective row would be
@@ -81,49 +120,8 @@ Matrix4f parseOne(const JsonNode& node) {
 }  // namespace
 
 const KeyList& transformKeys() {
-  static const KeyList keys = {
-      {"from", {}, ValueType::Vector3, "", "[0, 0, 1]", "look-at: the eye point"},
-      {"at",
-       {"to"},
-       ValueType::Vector3,
-       "not \"from\"",
-       "[0, 0, 0]",
-       "look-at: the point the local -z axis is turned towards"},
-      {"up",
-       {},
-       ValueType::Vector3,
-       "not zero, not along at - from",
-       "[0, 1, 0]",
-       "look-at: the direction that local +y leans towards"},
-      {"o", {}, ValueType::Vector3, "", "[0, 0, 0]", "frame: where the local origin goes"},
-      {"x", {}, ValueType::Vector3, "", "[1, 0, 0]", "frame: where local x goes"},
-      {"y", {}, ValueType::Vector3, "", "[0, 1, 0]", "frame: where local y goes"},
-      {"z", {}, ValueType::Vector3, "", "[0, 0, 1]", "frame: where local z goes"},
-      {"translate", {}, ValueType::Vector3, "", "—", "a translation"},
-      {"scale",
-       {},
-       ValueType::Vector3,
-       "no component 0",
-       "—",
-       "a scale along the axes (one number: uniform)"},
-      {"axis",
-       {},
-       ValueType::Vector3,
-       "not zero",
-       "required with angle",
-       "rotation: the axis (through the origin)"},
-      {"angle",
-       {},
-       ValueType::Number,
-       "",
-       "required with axis",
-       "rotation: the angle in degrees, right-handed (counter-clockwise seen from the axis's tip)"},
-      {"matrix",
-       {},
-       ValueType::Array,
-       "16 numbers, row-major, last row [0, 0, 0, 1]",
-       "—",
-       "an affine matrix"}};
+  static const KeyList keys = declarations(kFrom, kAt, kUp, kOrigin, kAxisX, kAxisY, kAxisZ,
+                                           kTranslate, kScale, kAxis, kAngle, kMatrix);
   return keys;
 }
 

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "core/hash.h"
-#include "params/json_node.h"
+#include "params/key.h"
 #include "sampling/independent_sampler.h"
 
 namespace verity {
@@ -48,24 +48,26 @@ Point2f HaltonSampler::next2D() {
   return u;
 }
 
+namespace {
+
+const Key<DigitScramble> kRandomization{
+    .name = "randomization",
+    .defaultValue = DigitScramble::Owen,
+    .allowed = {{"owen", DigitScramble::Owen}, {"permute_digits", DigitScramble::PermuteDigits}},
+    .meaning =
+        "how the digits are scrambled: nested, keyed by the digits before (Owen 1995), or "
+        "one permutation per digit position (Matousek 1998)"};
+
+}  // namespace
+
 SamplerType haltonSamplerType() {
   return {"halton",
           {},
           "Halton points per pixel, their digits scrambled per pixel and dimension",
-          {{"randomization",
-            {},
-            ValueType::String,
-            "\"owen\" or \"permute_digits\"",
-            "\"owen\"",
-            "how the digits are scrambled: nested, keyed by the digits before (Owen 1995), or "
-            "one permutation per digit position (Matousek 1998)"}},
+          declarations(kRandomization),
           [](const JsonNode* node) -> std::unique_ptr<Sampler> {
-            const std::string r = node ? node->getString({"randomization"}, "owen") : "owen";
-            if (r == "owen") return std::make_unique<HaltonSampler>(DigitScramble::Owen);
-            if (r == "permute_digits")
-              return std::make_unique<HaltonSampler>(DigitScramble::PermuteDigits);
-            (*node)[{"randomization"}].fail("unknown Halton randomization \"" + r +
-                                            "\" (expected owen or permute_digits)");
+            return std::make_unique<HaltonSampler>(node ? node->get(kRandomization)
+                                                        : *kRandomization.defaultValue);
           }};
 }
 

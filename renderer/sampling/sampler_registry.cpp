@@ -11,43 +11,14 @@ namespace verity {
 // library, and the linker drops an object file that nothing references, together with the
 // registrar it holds. A function-local table is built on first use, in a fixed order. A new
 // type adds its entry function here.
-const std::vector<SamplerType>& samplerTypes() {
-  static const std::vector<SamplerType> types = {
-      independentSamplerType(),
-      stratifiedSamplerType(),
-      haltonSamplerType(),
-      sobolSamplerType(),
-  };
+const Registry<SamplerType>& samplerTypes() {
+  static const Registry<SamplerType> types("sampler type", {
+                                                               independentSamplerType(),
+                                                               stratifiedSamplerType(),
+                                                               haltonSamplerType(),
+                                                               sobolSamplerType(),
+                                                           });
   return types;
-}
-
-const SamplerType* findSamplerType(const std::string& spelling) {
-  for (const SamplerType& t : samplerTypes()) {
-    if (t.name == spelling) return &t;
-    for (const std::string& alias : t.aliases)
-      if (alias == spelling) return &t;
-  }
-  return nullptr;
-}
-
-std::string samplerTypeList() {
-  std::string list;
-  for (const SamplerType& t : samplerTypes()) list += (list.empty() ? "" : ", ") + t.name;
-  return list;
-}
-
-std::string samplerTypeHelp() {
-  std::string help;
-  for (const SamplerType& t : samplerTypes()) {
-    std::string names = t.name;
-    if (!t.aliases.empty()) {
-      names += " (";
-      for (size_t i = 0; i < t.aliases.size(); ++i) names += (i ? ", " : "") + t.aliases[i];
-      names += ")";
-    }
-    help += "  " + names + ": " + t.description + "\n";
-  }
-  return help;
 }
 
 }  // namespace verity

@@ -20,7 +20,7 @@ struct SamplerType {
   // Reads the type's keys from `node`, the scene's "sampler" object, or null when the scene
   // gives none (every key at its default). Unknown keys are rejected by the scene loader.
   using Build = std::unique_ptr<Sampler> (*)(const JsonNode* node);
-  std::string name;                  // lower case, as JsonNode::type() returns it
+  std::string name;                  // canonical; looked up by the rule of params/registry.h
   std::vector<std::string> aliases;  // other spellings of the same type
   std::string description;           // one line: what it is
   // The type's own keys, besides samplerCommonKeys() (scene_keys.h: "type" and the sample

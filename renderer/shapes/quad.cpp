@@ -1,6 +1,6 @@
 #include "shapes/quad.h"
 
-#include "params/json_node.h"
+#include "params/key.h"
 
 namespace verity {
 
@@ -59,23 +59,22 @@ ShapeSample Quad::sampleArea(const Point2f& u) const {
   return {corner_ + u.x() * edgeU_ + u.y() * edgeV_, normal_, pError_, 1.0f / area_};
 }
 
+namespace {
+
+const Key<Vector2f> kQuadSize{.name = "size",
+                              .defaultValue = Vector2f(1, 1),
+                              .allowed = Range::positive(),
+                              .meaning = "the side lengths along local x and y"};
+
+}  // namespace
+
 ShapeType quadType() {
   return {"quad",
+          {},
           "a rectangle centred in the local xy-plane, front side +z",
-          {{"size", {}, ValueType::Size2, "each > 0", "1", "the side lengths along local x and y"}},
+          declarations(kQuadSize),
           [](const JsonNode& node, const Transform& toWorld) -> std::unique_ptr<Shape> {
-            Vector2f size(1, 1);
-            if (auto s = node.find({"size"})) {
-              if (s->isNumber()) {
-                size.setConstant(s->asFloat(Range::positive()));
-              } else {
-                if (!s->isArray() || s->size() != 2)
-                  s->fail("expected a number or [width, height]");
-                size = Vector2f((*s)[0].asFloat(Range::positive()),
-                                (*s)[1].asFloat(Range::positive()));
-              }
-            }
-            return std::make_unique<Quad>(toWorld, size);
+            return std::make_unique<Quad>(toWorld, node.get(kQuadSize));
           }};
 }
 

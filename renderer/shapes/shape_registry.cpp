@@ -8,32 +8,16 @@ namespace verity {
 
 // An explicit list, as materials' (material_registry.cpp): the renderer is a static library,
 // whose unreferenced object files the linker drops, self-registration and all.
-const std::vector<ShapeType>& shapeTypes() {
-  static const std::vector<ShapeType> types = {sphereType(), quadType(), meshType(),
-                                               triangleType()};
+// A "group" is read by the scene loader, and named among the known surface types.
+const Registry<ShapeType>& shapeTypes() {
+  static const Registry<ShapeType> types(
+      "surface type", {sphereType(), quadType(), meshType(), triangleType()}, {"group"});
   return types;
-}
-
-const ShapeType* findShapeType(const std::string& name) {
-  for (const ShapeType& t : shapeTypes())
-    if (t.name == name) return &t;
-  return nullptr;
-}
-
-std::string shapeTypeList() {
-  std::string list;
-  for (const ShapeType& t : shapeTypes()) list += (list.empty() ? "" : ", ") + t.name;
-  return list;
 }
 
 const KeyList& surfaceCommonKeys() {
   static const KeyList keys = {
-      {"type",
-       {},
-       ValueType::String,
-       "a shape's name or \"group\" (any letter case)",
-       "required",
-       "the surface type"},
+      shapeTypes().typeKey(),
       {"transform",
        {},
        ValueType::Transform,

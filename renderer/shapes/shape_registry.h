@@ -6,16 +6,13 @@
 #include <string>
 #include <vector>
 
+#include "params/registry.h"
 #include "shapes/shape_type.h"
 
 namespace verity {
 
 // In the order of the table in shape_registry.cpp.
-const std::vector<ShapeType>& shapeTypes();
-// The type named `name` (lower case); null if none.
-const ShapeType* findShapeType(const std::string& name);
-// "sphere, quad, ...": the names, for errors.
-std::string shapeTypeList();
+const Registry<ShapeType>& shapeTypes();
 // The keys every surface takes, a group's included: "type" and "transform".
 const KeyList& surfaceCommonKeys();
 // The keys every shape takes besides its type's: "material".

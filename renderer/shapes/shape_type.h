@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/transform.h"
 #include "params/key_declaration.h"
@@ -20,6 +21,7 @@ struct ShapeType {
   // its groups'. The scene loader reads "type", "transform" and "material".
   using Build = std::unique_ptr<Shape> (*)(const JsonNode& node, const Transform& toWorld);
   std::string name;
+  std::vector<std::string> aliases;  // other spellings of the same type
   std::string description;
   KeyList keys;  // besides surfaceCommonKeys() and "material"
   Build build;

@@ -1,6 +1,6 @@
 #include "shapes/sphere.h"
 
-#include "params/json_node.h"
+#include "params/key.h"
 #include "sampling/warp.h"
 
 namespace verity {
@@ -89,12 +89,22 @@ float Sphere::pdfSolidAngle(const Point3f& ref, const Point3f& p, const Normal3f
   return 1.0f / (2 * kPi * oneMinusCos);
 }
 
+namespace {
+
+const Key<float> kRadius{.name = "radius",
+                         .defaultValue = 1,
+                         .allowed = Range::positive(),
+                         .meaning = "the radius, in local units"};
+
+}  // namespace
+
 ShapeType sphereType() {
   return {"sphere",
+          {},
           "a sphere about the local origin; its poles on the local y axis",
-          {{"radius", {}, ValueType::Number, "> 0", "1", "the radius, in local units"}},
+          declarations(kRadius),
           [](const JsonNode& node, const Transform& toWorld) -> std::unique_ptr<Shape> {
-            const float radius = node.getFloat({"radius"}, 1, Range::positive());
+            const float radius = node.get(kRadius);
             if (!toWorld.isSimilarity(nullptr))
               node[{"transform"}].fail(
                   "a sphere's transform must scale uniformly (no shear or non-uniform scale)");

@@ -1,6 +1,6 @@
 // The scene format's triangle surfaces: "mesh", read from an OBJ file, and "triangle", given
 // inline. Both become a TriangleMesh in world space.
-#include "params/json_node.h"
+#include "params/key.h"
 #include "shapes/obj_loader.h"
 #include "shapes/triangle_mesh.h"
 
@@ -18,12 +18,31 @@ MeshData keepFront(MeshData mesh, const Transform& toWorld) {
   return mesh;
 }
 
+const KeyDeclaration kPositions{"positions",      {},
+                                ValueType::Array, "3 points, each a number or [x, y, z]",
+                                "required",       "the corners, in local coordinates"};
+const KeyDeclaration kNormals{"normals",
+                              {},
+                              ValueType::Array,
+                              "3 non-zero vectors",
+                              "the geometric normal",
+                              "shading normals at the corners, interpolated across the triangle"};
+const KeyDeclaration kUvs{"uvs",
+                          {},
+                          ValueType::Array,
+                          "3 pairs [u, v]",
+                          "barycentric (u, v)",
+                          "texture coordinates at the corners"};
+const Key<std::string> kMeshFile{.name = "filename",
+                                 .allowed = "an OBJ file, relative to the scene file",
+                                 .meaning = "the mesh to load"};
+
 MeshData parseTriangle(const JsonNode& node, const Transform& toWorld) {
   MeshData mesh;
-  const JsonNode positions = node[{"positions"}];
+  const JsonNode positions = node[kPositions];
   if (!positions.isArray() || positions.size() != 3) positions.fail("expected 3 points");
   for (size_t i = 0; i < 3; ++i) mesh.positions.push_back(toWorld.point(positions[i].asVector3()));
-  if (auto normals = node.find({"normals"})) {
+  if (auto normals = node.find(kNormals)) {
     if (!normals->isArray() || normals->size() != 3) normals->fail("expected 3 normals");
     for (size_t i = 0; i < 3; ++i) {
       const Normal3f n = toWorld.normal((*normals)[i].asVector3());
@@ -31,7 +50,7 @@ MeshData parseTriangle(const JsonNode& node, const Transform& toWorld) {
       mesh.normals.push_back(n.normalized());
     }
   }
-  if (auto uvs = node.find({"uvs"})) {
+  if (auto uvs = node.find(kUvs)) {
     if (!uvs->isArray() || uvs->size() != 3) uvs->fail("expected 3 uv pairs");
     for (size_t i = 0; i < 3; ++i) {
       const JsonNode uv = (*uvs)[i];
@@ -47,16 +66,12 @@ MeshData parseTriangle(const JsonNode& node, const Transform& toWorld) {
 
 ShapeType meshType() {
   return {"mesh",
+          {},
           "the triangles of a Wavefront OBJ file (polygons fan-triangulated), with its normals "
           "and uvs where it has them",
-          {{"filename",
-            {},
-            ValueType::String,
-            "an OBJ file, relative to the scene file",
-            "required",
-            "the mesh to load"}},
+          declarations(kMeshFile),
           [](const JsonNode& node, const Transform& toWorld) -> std::unique_ptr<Shape> {
-            const JsonNode file = node[{"filename"}];
+            const JsonNode file = node[kMeshFile];
             try {
               return std::make_unique<TriangleMesh>(
                   keepFront(loadObj(node.resolve(file.asString()), toWorld, file.path()), toWorld));
@@ -69,26 +84,10 @@ ShapeType meshType() {
 
 ShapeType triangleType() {
   return {"triangle",
+          {},
           "one triangle given by its corners; its front side is the one they turn "
           "counter-clockwise around",
-          {{"positions",
-            {},
-            ValueType::Array,
-            "3 points, each a number or [x, y, z]",
-            "required",
-            "the corners, in local coordinates"},
-           {"normals",
-            {},
-            ValueType::Array,
-            "3 non-zero vectors",
-            "the geometric normal",
-            "shading normals at the corners, interpolated across the triangle"},
-           {"uvs",
-            {},
-            ValueType::Array,
-            "3 pairs [u, v]",
-            "barycentric (u, v)",
-            "texture coordinates at the corners"}},
+          declarations(kPositions, kNormals, kUvs),
           [](const JsonNode& node, const Transform& toWorld) -> std::unique_ptr<Shape> {
             return std::make_unique<TriangleMesh>(keepFront(parseTriangle(node, toWorld), toWorld));
           }};

@@ -15,27 +15,33 @@ Color3 CheckerTexture::eval(const TextureQuery& q) const {
   return parity ? odd_.eval(q) : even_.eval(q);
 }
 
+namespace {
+
+const Key<TexturedColor> kEven{
+    .name = "even",
+    .defaultValue = TexturedColor(Color3::Ones()),
+    .allowed = "each channel >= 0",
+    .meaning = "the cells whose integer coordinates ⌊scale · p⌋ sum to an even number"};
+const Key<TexturedColor> kOdd{.name = "odd",
+                              .defaultValue = TexturedColor(Color3::Zero()),
+                              .allowed = "each channel >= 0",
+                              .meaning = "the other cells"};
+const Key<float> kCheckerScale{.name = "scale",
+                               .defaultValue = 1,
+                               .allowed = Range::positive(),
+                               .meaning = "cells per unit length: a cell's side is 1/scale"};
+
+}  // namespace
+
 TextureType checkerTextureType() {
   return {"checker",
+          {},
           "a solid checkerboard of cubic cells alternating two textures",
-          {{"even",
-            {},
-            ValueType::Texture,
-            "each channel >= 0",
-            "1",
-            "the cells whose integer coordinates ⌊scale · p⌋ sum to an even number"},
-           {"odd", {}, ValueType::Texture, "each channel >= 0", "0", "the other cells"},
-           {"scale",
-            {},
-            ValueType::Number,
-            "> 0",
-            "1",
-            "cells per unit length: a cell's side is 1/scale"},
-           solidTransformKey()},
+          declarations(kEven, kOdd, kCheckerScale, solidTransformKey()),
           [](const JsonNode& node, TextureFactory& factory, const std::string& quantity) {
-            TexturedColor even = factory.parse(node, {"even"}, Color3::Ones(), quantity);
-            TexturedColor odd = factory.parse(node, {"odd"}, Color3::Zero(), quantity);
-            const float scale = node.getFloat({"scale"}, 1.0f, Range::positive());
+            TexturedColor even = factory.parse(node, kEven, quantity);
+            TexturedColor odd = factory.parse(node, kOdd, quantity);
+            const float scale = node.get(kCheckerScale);
             return TexturedColor(
                 std::make_shared<CheckerTexture>(even, odd, scale, parseSolidMapping(node)));
           }};

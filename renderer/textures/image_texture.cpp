@@ -106,18 +106,24 @@ Color3 ImageTexture::eval(const TextureQuery& q) const {
          (1 - fx) * fy * texel(x0, y0 + 1) + fx * fy * texel(x0 + 1, y0 + 1);
 }
 
+namespace {
+
+const Key<std::string> kImageFile{
+    .name = "filename",
+    .allowed = "a PNG, JPEG, BMP, TGA, Radiance .hdr or OpenEXR file, relative to the scene file",
+    .meaning =
+        "the image: 8-bit files are sRGB, .hdr and OpenEXR linear; (u, v) = (0, 0) is its "
+        "bottom-left corner"};
+
+}  // namespace
+
 TextureType imageTextureType() {
   return {"image",
+          {},
           "a bitmap looked up by the surface's uv, bilinearly filtered and repeated",
-          {{"filename",
-            {},
-            ValueType::String,
-            "a PNG, JPEG, BMP, TGA, Radiance .hdr or OpenEXR file, relative to the scene file",
-            "required",
-            "the image: 8-bit files are sRGB, .hdr and OpenEXR linear; (u, v) = (0, 0) is its "
-            "bottom-left corner"}},
+          declarations(kImageFile),
           [](const JsonNode& node, TextureFactory& factory, const std::string&) {
-            return TexturedColor(factory.image(node[{"filename"}]));
+            return TexturedColor(factory.image(node[kImageFile]));
           }};
 }
 

@@ -1,6 +1,5 @@
 #include "textures/marble.h"
 
-#include <fmt/format.h>
 #include <stb_perlin.h>
 
 #include "core/ray.h"
@@ -23,28 +22,34 @@ namespace {
 // Beyond this scale a point at the largest coordinate a scene may hold overflows to infinity,
 // and the veins' sine of it is NaN.
 constexpr float kMaxScale = std::numeric_limits<float>::max() / kMaxSceneCoordinate;
+
+const Key<TexturedColor> kVeins{.name = "veins",
+                                .defaultValue = TexturedColor(Color3::Constant(0.1f)),
+                                .allowed = "each channel >= 0",
+                                .meaning = "the colour of the veins"};
+const Key<TexturedColor> kBase{.name = "base",
+                               .defaultValue = TexturedColor(Color3::Constant(0.9f)),
+                               .allowed = "each channel >= 0",
+                               .meaning = "the colour between the veins"};
+const Key<float> kMarbleScale{
+    .name = "scale",
+    .defaultValue = 1,
+    .allowed = {0.0f, kMaxScale, true, false},
+    .meaning = "the pattern's frequency: veins repeat every 2π/scale along x"};
 }  // namespace
 
 TextureType marbleTextureType() {
-  return {
-      "marble",
-      "solid marble: veins running across x, bent by Perlin turbulence",
-      {{"veins", {}, ValueType::Texture, "each channel >= 0", "0.1", "the colour of the veins"},
-       {"base", {}, ValueType::Texture, "each channel >= 0", "0.9", "the colour between the veins"},
-       {"scale",
-        {},
-        ValueType::Number,
-        fmt::format("(0, {:.2g}]", kMaxScale),
-        "1",
-        "the pattern's frequency: veins repeat every 2π/scale along x"},
-       solidTransformKey()},
-      [](const JsonNode& node, TextureFactory& factory, const std::string& quantity) {
-        TexturedColor veins = factory.parse(node, {"veins"}, Color3::Constant(0.1f), quantity);
-        TexturedColor base = factory.parse(node, {"base"}, Color3::Constant(0.9f), quantity);
-        const float scale = node.getFloat({"scale"}, 1.0f, Range{0.0f, kMaxScale, true, false});
-        return TexturedColor(
-            std::make_shared<MarbleTexture>(veins, base, scale, parseSolidMapping(node)));
-      }};
+  return {"marble",
+          {},
+          "solid marble: veins running across x, bent by Perlin turbulence",
+          declarations(kVeins, kBase, kMarbleScale, solidTransformKey()),
+          [](const JsonNode& node, TextureFactory& factory, const std::string& quantity) {
+            TexturedColor veins = factory.parse(node, kVeins, quantity);
+            TexturedColor base = factory.parse(node, kBase, quantity);
+            const float scale = node.get(kMarbleScale);
+            return TexturedColor(
+                std::make_shared<MarbleTexture>(veins, base, scale, parseSolidMapping(node)));
+          }};
 }
 
 }  // namespace verity

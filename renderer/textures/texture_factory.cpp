@@ -12,21 +12,19 @@ TexturedColor TextureFactory::parse(const JsonNode& node, const std::string& qua
     return TexturedColor(Color3(v.array()));
   }
   if (!node.isObject()) node.fail("expected a number, [r,g,b] or a texture object");
-  const std::string type = node.type();
-  const TextureType* entry = findTextureType(type);
-  if (!entry)
-    node[{"type"}].fail("unknown texture type \"" + type + "\" (expected " + textureTypeList() +
-                        ")");
-  node.declare({"texture " + entry->name, {&textureCommonKeys(), &entry->keys}});
-  TexturedColor result = entry->build(node, *this, quantity);
+  const TextureType& entry = textureTypes().get(node[{"type"}]);
+  node.declare({"texture " + entry.name, {&textureCommonKeys(), &entry.keys}});
+  TexturedColor result = entry.build(node, *this, quantity);
   node.rejectUnknownKeys();
   return result;
 }
 
-TexturedColor TextureFactory::parse(const JsonNode& parent, Keys keys, const Color3& def,
+TexturedColor TextureFactory::parse(const JsonNode& parent, const Key<TexturedColor>& key,
                                     const std::string& quantity) {
-  auto node = parent.find(keys);
-  return node ? parse(*node, quantity) : TexturedColor(def);
+  auto node = parent.find(key);
+  if (node) return parse(*node, quantity);
+  if (!key.defaultValue) parent.fail("missing required key \"" + key.name + "\"");
+  return *key.defaultValue;
 }
 
 std::shared_ptr<const ImageTexture> TextureFactory::image(const JsonNode& fileNode) {

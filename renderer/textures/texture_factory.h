@@ -6,10 +6,21 @@
 #include <memory>
 #include <string>
 
-#include "params/json_node.h"
+#include "params/key.h"
 #include "textures/texture.h"
 
 namespace verity {
+
+// A key whose value is a texture: a number, [r, g, b] or a texture object; its default is a
+// constant colour. TextureFactory::parse reads it. `Allowed` says in words what the reader
+// accepts (a constant is never negative).
+template <>
+struct KeyValue<TexturedColor> {
+  using Allowed = std::string;
+  static constexpr ValueType type = ValueType::Texture;
+  static std::string allowedText(const std::string& words) { return words; }
+  static std::string text(const TexturedColor& v) { return KeyValue<Color3>::text(v.constant()); }
+};
 
 class ImageTexture;
 
@@ -17,8 +28,8 @@ class TextureFactory {
  public:
   // `quantity` names the value in errors ("roughness must not be negative").
   TexturedColor parse(const JsonNode& node, const std::string& quantity = "a colour");
-  // Reads member `keys` of `parent`, or `def` when absent.
-  TexturedColor parse(const JsonNode& parent, Keys keys, const Color3& def,
+  // Reads the member `key` of `parent`, or its default when absent.
+  TexturedColor parse(const JsonNode& parent, const Key<TexturedColor>& key,
                       const std::string& quantity = "a colour");
   // The image that the file name `fileNode` names (relative to the scene file), decoded on
   // its first use.

@@ -10,18 +10,20 @@ namespace verity {
 
 namespace {
 
+const Key<TexturedColor> kConstantColor{
+    .name = "color",
+    .aliases = {"value"},
+    .allowed = "each channel >= 0",
+    .meaning = "the colour (a number, [r, g, b], or another texture)"};
+
 // A constant written as an object: it has no class of its own.
 TextureType constantTextureType() {
   return {"constant",
+          {},
           "one colour everywhere, written as an object",
-          {{"color",
-            {"value"},
-            ValueType::Texture,
-            "each channel >= 0",
-            "required",
-            "the colour (a number, [r, g, b], or another texture)"}},
+          declarations(kConstantColor),
           [](const JsonNode& node, TextureFactory& factory, const std::string& quantity) {
-            return factory.parse(node[{"color", "value"}], quantity);
+            return factory.parse(node, kConstantColor, quantity);
           }};
 }
 
@@ -29,33 +31,15 @@ TextureType constantTextureType() {
 
 // An explicit list, as materials' (material_registry.cpp): the renderer is a static library,
 // whose unreferenced object files the linker drops, self-registration and all.
-const std::vector<TextureType>& textureTypes() {
-  static const std::vector<TextureType> types = {constantTextureType(), checkerTextureType(),
-                                                 marbleTextureType(), imageTextureType()};
+const Registry<TextureType>& textureTypes() {
+  static const Registry<TextureType> types(
+      "texture type",
+      {constantTextureType(), checkerTextureType(), marbleTextureType(), imageTextureType()});
   return types;
 }
 
-const TextureType* findTextureType(const std::string& name) {
-  for (const TextureType& t : textureTypes())
-    if (t.name == name) return &t;
-  return nullptr;
-}
-
-std::string textureTypeList() {
-  const auto& types = textureTypes();
-  std::string list;
-  for (size_t i = 0; i < types.size(); ++i)
-    list += (i == 0 ? "" : i + 1 == types.size() ? " or " : ", ") + types[i].name;
-  return list;
-}
-
 const KeyList& textureCommonKeys() {
-  static const KeyList keys = {{"type",
-                                {},
-                                ValueType::String,
-                                "a texture type's name (any letter case)",
-                                "required",
-                                "the texture type"}};
+  static const KeyList keys = {textureTypes().typeKey()};
   return keys;
 }
 

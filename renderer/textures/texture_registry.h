@@ -6,16 +6,13 @@
 #include <string>
 #include <vector>
 
+#include "params/registry.h"
 #include "textures/texture_type.h"
 
 namespace verity {
 
 // In the order of the table in texture_registry.cpp.
-const std::vector<TextureType>& textureTypes();
-// The type named `name` (lower case); null if none.
-const TextureType* findTextureType(const std::string& name);
-// "constant, checker, marble or image", for errors.
-std::string textureTypeList();
+const Registry<TextureType>& textureTypes();
 // The keys every texture object takes: "type".
 const KeyList& textureCommonKeys();
 

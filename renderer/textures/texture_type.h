@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "params/key_declaration.h"
 #include "textures/texture.h"
@@ -21,6 +22,7 @@ struct TextureType {
   using Build = TexturedColor (*)(const JsonNode& node, TextureFactory& factory,
                                   const std::string& quantity);
   std::string name;
+  std::vector<std::string> aliases;  // other spellings of the same type
   std::string description;
   KeyList keys;  // besides textureCommonKeys()
   Build build;

@@ -15,6 +15,7 @@
 
 #include "loader/scene_loader.h"
 #include "params/json_node.h"
+#include "params/key.h"
 #include "testing/error_of.h"
 
 namespace verity {
@@ -263,13 +264,16 @@ TEST(DeclaredKeys, AReadOfAnUndeclaredKeyOrSpellingIsADefectOfTheReader) {
     m.declare({"material test", {&keys}});
     return m;
   };
-  EXPECT_EQ(object().getFloat({"alpha", "ab"}, 0.1f), 0.2f);
-  EXPECT_EQ(object().getFloat({"ab", "alpha"}, 0.1f), 0.2f);
+  const auto key = [](std::string name, std::vector<std::string> aliases) {
+    return Key<float>{.name = std::move(name), .aliases = std::move(aliases), .defaultValue = 0.1f};
+  };
+  EXPECT_EQ(object().get(key("alpha", {"ab"})), 0.2f);
+  EXPECT_EQ(object().get(key("ab", {"alpha"})), 0.2f);
   // An undeclared key, absent from the file as well: the read itself is refused.
-  EXPECT_THROW(object().getFloat({"ior"}, 1.5f), std::logic_error);
+  EXPECT_THROW(object().get(key("ior", {})), std::logic_error);
   // A declared key by fewer spellings than declared, or by one more.
-  EXPECT_THROW(object().getFloat({"alpha"}, 0.1f), std::logic_error);
-  EXPECT_THROW(object().getFloat({"alpha", "ab", "roughness"}, 0.1f), std::logic_error);
+  EXPECT_THROW(object().get(key("alpha", {})), std::logic_error);
+  EXPECT_THROW(object().get(key("alpha", {"ab", "roughness"})), std::logic_error);
   // A key read before the declaration must be among the declared ones.
   JsonNode root = JsonNode::parse(R"({"m": {"alpha": 0.2, "ior": 1.5}})", "/tmp/declared.json");
   JsonNode m = root[{"m"}];

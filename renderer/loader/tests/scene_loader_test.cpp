@@ -257,7 +257,7 @@ INSTANTIATE_TEST_SUITE_P(
             R"("integrator": {"type": "path_tracer_nee", "max_bounces": 3, "max bounces": 3})",
             "integrator"},
         ErrorCase{R"("integrator": {"type": "path_tracer_nee", "rr_depth": -1})",
-                  "integrator.rr_depth: expected an integer in [1, "},
+                  "integrator.rr_depth: expected an integer >= 1, found -1"},
         ErrorCase{R"("integrator": {"type": "bdpt", "rr_depth": 2.5})", "integrator.rr_depth"},
         ErrorCase{R"("integrator": {"type": "light_tracer", "rr_depth": 0})",
                   "integrator.rr_depth"},

@@ -45,7 +45,7 @@ TEST(MaterialRegistry, UnknownTypeErrorAndHelpListEveryType) {
     message = e.what();
   }
   EXPECT_NE(message.find("type: unknown material type \"velvet\""), std::string::npos) << message;
-  const std::string help = materialTypeHelp();
+  const std::string help = materialTypes().help();
   for (const MaterialType& t : materialTypes()) {
     EXPECT_NE(message.find(t.name), std::string::npos) << message;
     EXPECT_NE(help.find(t.name + (t.aliases.empty() ? ":" : " (")), std::string::npos) << help;

@@ -1,5 +1,5 @@
 // The sampler registry: every name and alias builds its own type, no spelling belongs to two
-// types, a scene without a sampler object gets the first (default) type, and the unsupported-
+// types, a scene without a sampler object gets the first (default) type, and the unknown-
 // type error and the help list every type.
 #include "sampling/sampler_registry.h"
 
@@ -49,11 +49,11 @@ TEST(SamplerRegistry, DefaultIsIndependent) {
   EXPECT_EQ(typeid(*untyped), typeid(IndependentSampler));
 }
 
-TEST(SamplerRegistry, UnsupportedTypeErrorAndHelpListEveryType) {
+TEST(SamplerRegistry, UnknownTypeErrorAndHelpListEveryType) {
   const std::string message = errorOf([] { samplerFrom(R"({"type":"sobolev"})"); });
   EXPECT_NE(message.find("/tmp/sampler.json"), std::string::npos) << message;
-  EXPECT_NE(message.find("unsupported sampler type \"sobolev\""), std::string::npos) << message;
-  const std::string help = samplerTypeHelp();
+  EXPECT_NE(message.find("unknown sampler type \"sobolev\""), std::string::npos) << message;
+  const std::string help = samplerTypes().help();
   for (const SamplerType& t : samplerTypes()) {
     EXPECT_NE(message.find(t.name), std::string::npos) << message;
     EXPECT_NE(help.find(t.name + (t.aliases.empty() ? ":" : " (")), std::string::npos) << help;
