@@ -15,6 +15,7 @@ struct IntegralCheck {
   double tolerance = 0;  // quadrature tolerance added to the binomial bound
   long long samples = 0, valid = 0;
   double lower = 0, upper = 1;  // Clopper–Pearson interval of valid / samples
+  double confidence = 0;        // the interval's level: 1 − α
   bool passed = false;
   std::string describe() const;
 };
