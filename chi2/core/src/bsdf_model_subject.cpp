@@ -43,6 +43,8 @@ std::optional<Point2d> BsdfModelSubject::sample(pcg32& rng, Audit& audit) const 
     ++delta_;
     return std::nullopt;
   }
+  // pbrt's convention: a sample of density 0 is no sample, whatever else it holds.
+  if (s->pdf == 0) return std::nullopt;
   // Where a defect was found; formatted only when one is.
   auto at = [&] {
     return fmt::format("wi={} u=({}, {}, {}) wo={}", str(wi), u.lobe, u.xy.x, u.xy.y, str(s->wo));

@@ -23,8 +23,9 @@ namespace {
 using phong_toy::Flaw;
 using phong_toy::Vec3;
 
-// The checks that must pass: 2 incidences of the Phong lobe, 5 warps, 1 vector-type variant.
-constexpr int kCorrectChecks = 8;
+// The checks that must pass: 2 incidences of the Phong lobe, 5 warps, 1 vector-type variant,
+// 1 lobe that returns pdf 0 for "no sample".
+constexpr int kCorrectChecks = 9;
 const double kLevel = sidakLevel(0.01, kStatisticalTestsPerCheck* kCorrectChecks);
 constexpr long long kSamples = 200'000;
 constexpr double kExponent = 20.5;
@@ -54,6 +55,27 @@ std::string failed(const CheckResult& r) {
 }
 
 }  // namespace
+
+// pbrt's convention: a sample whose pdf is 0 is no sample. A lobe that returns one (weight 0,
+// pdf 0) below the horizon rather than nothing is counted as declining, not as a defect.
+TEST(BsdfAdapter, ASampleOfPdfZeroIsNoSample) {
+  const phong_toy::Phong p(kExponent, Flaw::None);
+  const BsdfModel model = bsdfModel<Vec3>(
+      [p](const Vec3& wi, const BsdfUniforms& u) -> std::optional<phong_toy::Sample> {
+        if (auto s = p.sample(wi, u.xy.x, u.xy.y)) return s;
+        return phong_toy::Sample{};
+      },
+      [p](const Vec3& wi, const Vec3& wo) { return p.eval(wi, wo); },
+      [p](const Vec3& wi, const Vec3& wo) { return p.pdf(wi, wo); });
+  BsdfCheckOptions o;
+  o.name = "adapter phong pdf 0 as no sample";
+  o.significance = kLevel;
+  o.samples = kSamples;
+  const double t = 75 * std::numbers::pi / 180;
+  const CheckResult r = checkBsdf(model, Vec3{std::sin(t), 0, std::cos(t)}, o);
+  EXPECT_TRUE(r.passed()) << failed(r);
+  EXPECT_LT(r.test.valid, r.test.samples) << "the lobe at 75 degrees must lose samples";
+}
 
 TEST(BsdfAdapter, CorrectPhongPasses) {
   for (double degrees : {30.0, 75.0}) {

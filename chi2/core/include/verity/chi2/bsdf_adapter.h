@@ -4,7 +4,8 @@
 //
 //   sample(const V& wi, const BsdfUniforms& u) -> std::optional<S>, S having members
 //       wo (V), weight (value), pdf (a number) and optionally delta (bool), e.g.
-//       SampledDirection<V, Value>; nothing when the BSDF cannot scatter from wi;
+//       SampledDirection<V, Value>; nothing when the BSDF cannot scatter from wi (a sample
+//       of pdf 0 counts as nothing too, pbrt's convention);
 //   eval(const V& wi, const V& wo) -> value          f without the cosine
 //   pdf(const V& wi, const V& wo)  -> a number       per unit solid angle
 //
