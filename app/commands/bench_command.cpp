@@ -9,6 +9,7 @@
 #include <chrono>
 #include <numeric>
 
+#include "cli/max_bounces_option.h"
 #include "cli/number_options.h"
 #include "cli/subcommand.h"
 #include "core/error.h"
@@ -331,10 +332,7 @@ void addBenchCommand(CLI::App& app, const ProcessGroup& group) {
                   "Image width in pixels, the scene's aspect ratio kept")
       ->default_str("the scene's")
       ->check(wholeNumber(1));
-  cmd->add_option("--max-bounces", args->maxBounces,
-                  "Maximum scattering events per path (0: emitters seen directly)")
-      ->default_str("the scene's")
-      ->check(wholeNumber(0, kMaxBouncesLimit));
+  addMaxBouncesOption(cmd, args->maxBounces);
   cmd->add_flag("--bdpt", args->bdpt,
                 "Time bdpt against path_tracer_nee per sample, and bdpt's 2-thread speedup");
   cmd->add_option("--repeats", args->repeats, "Alternating repeats (medians are reported)")

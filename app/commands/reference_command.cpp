@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/max_bounces_option.h"
 #include "cli/number_options.h"
 #include "cli/output_paths.h"
 #include "cli/seed_option.h"
@@ -21,10 +22,7 @@ void addReferenceCommand(CLI::App& app, const ProcessGroup& group) {
   cmd->add_option("--spp", config->spp, "Samples per pixel")->check(wholeNumber(1));
   cmd->add_option("--integrator", config->integrator, "Integrator type")
       ->default_str("the scene's");
-  cmd->add_option("--max-bounces", config->maxBounces,
-                  "Maximum scattering events per path (0: emitters seen directly)")
-      ->default_str("the scene's")
-      ->check(wholeNumber(0, kMaxBouncesLimit));
+  addMaxBouncesOption(cmd, config->maxBounces);
   cmd->add_option("--threads", config->threads,
                   "Worker threads per process; 0: all cores (under mpirun, the host's cores "
                   "shared among its ranks)")

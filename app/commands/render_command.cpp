@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "cli/exit_status.h"
+#include "cli/max_bounces_option.h"
 #include "cli/number_options.h"
 #include "cli/output_paths.h"
 #include "cli/seed_option.h"
@@ -255,10 +256,7 @@ void addRenderCommand(CLI::App& app, const ProcessGroup& group) {
   cmd->add_option("--sampler", args->sampler,
                   "Sampler, its keys at their defaults: " + samplerTypeList())
       ->default_str("the scene's");
-  cmd->add_option("--max-bounces", args->maxBounces,
-                  "Maximum scattering events per path (0: emitters seen directly)")
-      ->default_str("the scene's")
-      ->check(wholeNumber(0, kMaxBouncesLimit));
+  addMaxBouncesOption(cmd, args->maxBounces);
   cmd->add_option("--rr-depth", args->rrDepth,
                   "Scattering event after which Russian roulette first decides whether a path "
                   "goes on (the integrator's \"rr_depth\")")

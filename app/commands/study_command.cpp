@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/max_bounces_option.h"
 #include "cli/number_options.h"
 #include "cli/output_paths.h"
 #include "cli/subcommand.h"
@@ -87,10 +88,7 @@ void addConvergence(CLI::App& study, const ProcessGroup& group) {
                   "Image width in pixels, the scene's aspect ratio kept")
       ->default_str("the reference's")
       ->check(wholeNumber(1));
-  cmd->add_option("--max-bounces", config->maxBounces,
-                  "Maximum scattering events per path (0: emitters seen directly)")
-      ->default_str("the scene's")
-      ->check(wholeNumber(0, kMaxBouncesLimit));
+  addMaxBouncesOption(cmd, config->maxBounces);
   cmd->add_flag("--no-error-images", *noImages,
                 "Do not save relative-error images at the largest budget");
   cmd->add_flag("--force", config->force,
@@ -132,10 +130,7 @@ void addSpeedup(CLI::App& study, const ProcessGroup& group) {
                   "Image width in pixels, the scene's aspect ratio kept")
       ->default_str("the scene's")
       ->check(wholeNumber(1));
-  cmd->add_option("--max-bounces", config->maxBounces,
-                  "Maximum scattering events per path (0: emitters seen directly)")
-      ->default_str("the scene's")
-      ->check(wholeNumber(0, kMaxBouncesLimit));
+  addMaxBouncesOption(cmd, config->maxBounces);
   cmd->add_option("-o,--output", *output,
                   "Results file (JSON Lines; appended to; missing folders are created)");
   cmd->callback([=, &group] {
