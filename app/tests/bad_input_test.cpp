@@ -41,6 +41,7 @@ TEST_F(BadInput, EveryCommandExitsWithTwoAndNamesWhatItIsAbout) {
   const std::string missingExr = (dir_ / "missing.exr").string();
   const std::string out = (dir_ / "out.exr").string();
   const std::string jsonl = (dir_ / "out.jsonl").string();
+  const std::string lambertian = R"({"type":"lambertian"})";
   struct Case {
     std::vector<std::string> args;
     std::string names;  // what the message must name
@@ -70,6 +71,11 @@ TEST_F(BadInput, EveryCommandExitsWithTwoAndNamesWhatItIsAbout) {
       {{"compare", missingExr, missingExr}, missingExr},
       {{"chi2", "--material", R"({"type":"nope"})"}, "nope"},
       {{"chi2", "--incoming", "10"}, "--material"},
+      {{"chi2", "--material", lambertian, "--mass", "0.1"}, "--mass requires --detect"},
+      {{"chi2", "--material", lambertian, "--detect", "0.01", "--samples", "10"}, "--detect"},
+      {{"chi2", "--material", lambertian, "--detect", "0"}, "--detect: "},
+      {{"chi2", "--material", lambertian, "--alpha", "1"}, "--alpha: "},
+      {{"chi2", "--material", lambertian, "--power", "0.001"}, "--power: "},
   };
   for (const Case& c : cases) {
     std::string command;

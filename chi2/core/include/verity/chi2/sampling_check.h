@@ -6,10 +6,12 @@
 #include <verity/chi2/audit.h>
 #include <verity/chi2/chi_square.h>
 #include <verity/chi2/integral_check.h>
+#include <verity/chi2/power.h>
 #include <verity/chi2/quadrature.h>
 #include <verity/chi2/subject.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,13 @@ struct TestOptions {
   double significance = 0;
   QuadratureOptions quadrature;
   double integralTolerance = kIntegralTolerance;
+  // The probability at which the result states what the test could have caught.
+  double power = kDefaultPower;
+  // The caller's question. When set, `samples` is ignored: the test draws the samples the
+  // target needs (from the cells' probabilities and the chi-square test's dof), at most
+  // maxSamples; a target beyond that budget is never PASSED.
+  std::optional<DetectionTarget> detect;
+  long long maxSamples = 100'000'000;
 };
 
 // What a sampling test concluded. PASSED only when every check ran with the power it
@@ -37,7 +46,8 @@ struct TestResult {
   Domain domain;
   double significance = 0;
   long long samples = 0, valid = 0;
-  long long outside = 0;            // valid samples outside the domain's support: outright failures
+  long long outside = 0;       // valid samples outside the domain's support: outright failures
+  long long deltaSamples = 0;  // declined samples that were delta lobes (Subject::deltaSamples)
   std::vector<double> probability;  // ∫ pdf over each cell
   std::vector<double> expected;     // expected counts given the number of valid samples
   std::vector<long long> observed;
@@ -49,6 +59,18 @@ struct TestResult {
 
   double integralTolerance = 0;  // the stated quadrature tolerance on ∫pdf
 
+  // What the two statistical tests could have caught at their level (see power.h).
+  ChiSquarePower chiSquarePower;
+  IntegralPower integralPower;
+  // The caller's target, and the samples it needs (above maxSamples: not reached).
+  std::optional<DetectionTarget> target;
+  long long neededSamples = 0, maxSamples = 0;
+  bool targetReached() const { return !target || neededSamples <= maxSamples; }
+
+  // The chi-square test ran when there were valid samples, at least two cells after pooling
+  // and trustworthy expected counts; otherwise no statistic of it is shown.
+  bool chiSquareRan() const { return valid > 0 && !chiSquare.degenerate && quadratureHolds(); }
+
   bool chiSquarePassed() const { return outside == 0 && chiSquare.passed(significance); }
   // The cell probabilities are as accurate as the integral check states: the summed error
   // estimate lies within its tolerance. Otherwise the expected counts, the pdf integral and
@@ -56,8 +78,10 @@ struct TestResult {
   bool quadratureHolds() const { return quadratureError <= integralTolerance; }
   // FAILED on a defect that needs no quadrature (a per-sample defect, a sample outside the
   // support); else INCONCLUSIVE when the quadrature does not hold; else FAILED on the
-  // chi-square or pdf-integral test; else INCONCLUSIVE when no valid sample was drawn or
-  // too few cells expect enough samples for the chi-square test; else PASSED.
+  // chi-square or pdf-integral test; else INCONCLUSIVE when too few cells expect enough
+  // samples for the chi-square test, or when the caller's target needed more samples than
+  // the budget; else PASSED. A sampler that declines every sample while its pdf integrates
+  // to zero is PASSED on the pdf-integral test alone: it claims nothing, and draws nothing.
   Verdict verdict() const;
   // Why the verdict is INCONCLUSIVE; empty otherwise.
   std::string inconclusiveReason() const;
