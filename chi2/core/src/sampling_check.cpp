@@ -188,9 +188,8 @@ std::string TestResult::inconclusiveReason() const {
   std::string reason;
   if (valid == 0 && deltaSamples > 0)
     reason = fmt::format(
-        "no valid sample among {}: {} were delta lobes, which the histogram cannot test, and "
-        "the others were declined",
-        samples, deltaSamples);
+        "no valid sample among {}: {} were delta lobes, which the histogram cannot test{}",
+        samples, deltaSamples, deltaSamples < samples ? ", and the others were declined" : "");
   if (valid > 0 && chiSquare.degenerate)
     reason = fmt::format(
         "only {} cell(s) expect at least 5 of the {} valid samples after "
