@@ -69,6 +69,9 @@ TEST_F(BadInput, EveryCommandExitsWithTwoAndNamesWhatItIsAbout) {
       {{"bench", scene_, "--rr-depth", "2"}, "--rr-depth: "},
       {{"error", missingExr, "--reference", missingExr}, missingExr},
       {{"compare", missingExr, missingExr}, missingExr},
+      // Outputs are refused before the images are read (and so before any verdict is printed).
+      {{"compare", missingExr, missingExr, "--z-image", (dir_ / "z.jpg").string()}, "--z-image: "},
+      {{"compare", missingExr, missingExr, "-o", scene_ + "/report.json"}, "-o: cannot create"},
       {{"chi2", "--material", R"({"type":"nope"})"}, "nope"},
       {{"chi2", "--incoming", "10"}, "--material"},
       {{"chi2", "--material", lambertian, "--mass", "0.1"}, "--mass requires --detect"},
