@@ -48,6 +48,9 @@ struct TestResult {
   double seconds = 0;
 
   double integralTolerance = 0;  // the stated quadrature tolerance on ∫pdf
+  // Delta-lobe samples were drawn and checked apart (delta_check.h): with no valid sample
+  // there is nothing to histogram, yet something was checked.
+  bool deltaLobesChecked = false;
 
   bool chiSquarePassed() const { return outside == 0 && chiSquare.passed(significance); }
   // The cell probabilities are as accurate as the integral check states: the summed error
@@ -56,8 +59,9 @@ struct TestResult {
   bool quadratureHolds() const { return quadratureError <= integralTolerance; }
   // FAILED on a defect that needs no quadrature (a per-sample defect, a sample outside the
   // support); else INCONCLUSIVE when the quadrature does not hold; else FAILED on the
-  // chi-square or pdf-integral test; else INCONCLUSIVE when no valid sample was drawn or
-  // too few cells expect enough samples for the chi-square test; else PASSED.
+  // chi-square or pdf-integral test; else INCONCLUSIVE when no valid sample was drawn (and no
+  // delta lobe was checked) or too few cells expect enough samples for the chi-square test;
+  // else PASSED.
   Verdict verdict() const;
   // Why the verdict is INCONCLUSIVE; empty otherwise.
   std::string inconclusiveReason() const;
