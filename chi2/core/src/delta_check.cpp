@@ -1,4 +1,5 @@
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <tbb/parallel_for.h>
 #include <verity/chi2/delta_check.h>
 #include <verity/chi2/significance.h>
@@ -16,10 +17,6 @@ namespace {
 constexpr int kLobes = static_cast<int>(DeltaLobe::Count);
 // The sampling test uses streams 0, 1, …; these are far above them.
 constexpr uint64_t kFirstStream = uint64_t{1} << 62;
-
-std::string directionText(const Vector3d& v) {
-  return fmt::format("({:.7g}, {:.7g}, {:.7g})", v.x(), v.y(), v.z());
-}
 
 // The directions a delta sample may take from wi, by lobe (refraction only with η stated and
 // no total internal reflection; pass-through only without η).
@@ -124,8 +121,9 @@ DeltaCheck checkDeltaLobes(const BsdfModel& model, const Eigen::Vector3d& wi,
       const std::optional<DirectionSample> s = model.sample(wi, u);
       if (!s || !s->delta) continue;
       auto at = [&] {
-        return fmt::format("wi={} u=({}, {}, {}) wo={}", directionText(wi), u.lobe, u.xy.x, u.xy.y,
-                           directionText(s->wo));
+        return fmt::format("wi=({:.7g}) u=({}, {}, {}) wo=({:.7g})",
+                           fmt::join(wi.data(), wi.data() + 3, ", "), u.lobe, u.xy.x, u.xy.y,
+                           fmt::join(s->wo.data(), s->wo.data() + 3, ", "));
       };
       if (!s->wo.allFinite()) {
         p.audit.record(Defect::NonFinite, "delta direction " + at());
