@@ -16,6 +16,12 @@ CheckResult checkBsdf(const BsdfModel& model, const Eigen::Vector3d& wi,
   const BsdfModelSubject subject(model, setup);
   CheckResult r = runCheck(subject, options, setup.name);
   r.deltaSamples = subject.deltaSamples();
+  // The delta lobes, which the histogram leaves out, on a pass of their own.
+  if (r.deltaSamples > 0 || options.delta.statisticalTests() > 0) {
+    r.delta = checkDeltaLobes(model, setup.wi, options.delta, options.samples, options.significance,
+                              options.seed ? *options.seed : seedFromName(setup.name));
+    r.test.deltaLobesChecked = r.delta.deltaSamples > 0;
+  }
   return r;
 }
 

@@ -33,6 +33,8 @@ std::vector<std::string> CheckResult::failures() const {
   for (int d = 0; d < static_cast<int>(Defect::Count); ++d)
     if (test.audit.count(static_cast<Defect>(d)) > 0)
       out.push_back(defectName(static_cast<Defect>(d)));
+  if (delta.ran())
+    for (const std::string& f : delta.failures()) out.push_back(f);
   return out;
 }
 
@@ -45,6 +47,8 @@ std::string CheckResult::report() const {
   std::string s = test.report();
   if (deltaSamples > 0)
     s += fmt::format("\n  {} delta-lobe samples (not histogrammed)", deltaSamples);
+  if (delta.ran())
+    s += fmt::format("\n{}\n  {} with the delta lobes", delta.report(), verdictName(verdict()));
   if (!passed()) s += fmt::format("\n  failed: {}", fmt::join(failures(), ", "));
   return s;
 }

@@ -186,10 +186,10 @@ std::string TestResult::inconclusiveReason() const {
         quadratureError, integralTolerance);
   if (!chiSquarePassed() || !integral.passed) return {};
   std::string reason;
-  if (valid == 0 && deltaSamples > 0)
+  if (valid == 0 && deltaSamples > 0 && !deltaLobesChecked)
     reason = fmt::format(
-        "no valid sample among {}: {} were delta lobes, which the histogram cannot test{}",
-        samples, deltaSamples, deltaSamples < samples ? ", and the others were declined" : "");
+        "no valid sample among {}: {} were delta lobes, which the histogram cannot test{}", samples,
+        deltaSamples, deltaSamples < samples ? ", and the others were declined" : "");
   if (valid > 0 && chiSquare.degenerate)
     reason = fmt::format(
         "only {} cell(s) expect at least 5 of the {} valid samples after "
@@ -244,9 +244,11 @@ std::string TestResult::report() const {
   s += fmt::format("  {} in {:.2f} s", verdictName(v), seconds);
   if (v == Verdict::Inconclusive) s += ": " + inconclusiveReason();
   if (v == Verdict::Passed)
-    s += ": " + (chiSquareRan() ? chiSquarePower.describe()
-                                : "the sampler declined every sample and pdf() claims no mass; " +
-                                      integralPower.describe());
+    s += ": " + (chiSquareRan()      ? chiSquarePower.describe()
+                 : deltaLobesChecked ? "every sample was a delta lobe, checked below"
+                                     : "the sampler declined every sample and pdf() claims no "
+                                       "mass; " +
+                                           integralPower.describe());
   return s;
 }
 

@@ -16,6 +16,9 @@
 //   pdf integral     ∫pdf over the sphere against the fraction of valid samples
 //   per sample       weight = eval·|cos θo|/pdf, sample pdf = pdf(), unit finite wo,
 //                    no NaN, Inf or negative value, reciprocity (with the indices)
+//   delta lobes      each delta sample's direction (mirror, refraction for options.delta.eta
+//                    or straight through) and weight; each lobe's share and albedo, against
+//                    the caller's expectations where stated (delta_check.h)
 // Each is a statistical test at `significance`, chosen by the caller; see check_result.h.
 //
 //   auto model = verity::chi2::bsdfModel<Vec3>(sample, eval, pdf);
@@ -87,6 +90,7 @@ BsdfModel bsdfModel(SampleFn sample, EvalFn eval, PdfFn pdf) {
 
 struct BsdfCheckOptions : CheckOptions {
   bool checkReciprocity = true;
+  DeltaCheckOptions delta;  // the delta lobes' directions and expectations (delta_check.h)
 };
 
 // One incident direction wi (local frame, normalised here).

@@ -3,6 +3,7 @@
 // plus a list of what failed, by name, to print or assert on.
 #pragma once
 
+#include <verity/chi2/delta_check.h>
 #include <verity/chi2/sampling_check.h>
 
 #include <cstdint>
@@ -14,6 +15,8 @@ namespace verity::chi2 {
 
 // Each check runs two statistical tests (chi-square and pdf integral): a caller that runs
 // n checks at a family-wise level α uses sidakLevel(α, kStatisticalTestsPerCheck · n).
+// A BSDF check adds one test per expected delta-lobe share or albedo it states
+// (DeltaCheckOptions::statisticalTests()).
 inline constexpr int kStatisticalTestsPerCheck = 2;
 
 // What every adapter's check is told.
@@ -38,11 +41,15 @@ struct CheckOptions {
 struct CheckResult {
   TestResult test;
   long long deltaSamples = 0;  // delta-lobe samples, counted and not histogrammed
+  DeltaCheck delta;            // their own checks (delta_check.h), where there were any
 
   // PASSED, FAILED, or INCONCLUSIVE when a check could not run with its stated power
-  // (test.inconclusiveReason() says why); passed() only on PASSED.
-  Verdict verdict() const { return test.verdict(); }
-  bool passed() const { return test.passed(); }
+  // (test.inconclusiveReason() says why); FAILED too when the delta lobes fail. passed() only
+  // on PASSED.
+  Verdict verdict() const {
+    return delta.ran() && !delta.passed() ? Verdict::Failed : test.verdict();
+  }
+  bool passed() const { return verdict() == Verdict::Passed; }
   // "chi-square", "pdf integral", "samples outside the domain", "inconclusive" and the
   // audit's defects ("weight != eval*cos/pdf", "reciprocity", ...: defectName()); empty
   // when it passed.

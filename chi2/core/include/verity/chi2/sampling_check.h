@@ -58,6 +58,9 @@ struct TestResult {
   double seconds = 0;
 
   double integralTolerance = 0;  // the stated quadrature tolerance on ∫pdf
+  // Delta-lobe samples were drawn and checked apart (delta_check.h): with no valid sample
+  // there is nothing to histogram, yet something was checked.
+  bool deltaLobesChecked = false;
 
   // What the two statistical tests could have caught at their level (see power.h).
   ChiSquarePower chiSquarePower;
@@ -81,7 +84,8 @@ struct TestResult {
   // chi-square or pdf-integral test; else INCONCLUSIVE when too few cells expect enough
   // samples for the chi-square test, or when the caller's target needed more samples than
   // the budget; else PASSED. A sampler that declines every sample while its pdf integrates
-  // to zero is PASSED on the pdf-integral test alone: it claims nothing, and draws nothing.
+  // to zero is PASSED on the pdf-integral test alone: it claims nothing, and draws nothing;
+  // one whose samples were all delta lobes is INCONCLUSIVE unless they were checked apart.
   Verdict verdict() const;
   // Why the verdict is INCONCLUSIVE; empty otherwise.
   std::string inconclusiveReason() const;

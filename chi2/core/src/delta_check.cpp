@@ -1,0 +1,266 @@
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <tbb/parallel_for.h>
+#include <verity/chi2/delta_check.h>
+#include <verity/chi2/significance.h>
+#include <verity/chi2/subject.h>
+
+#include <boost/math/distributions/binomial.hpp>
+#include <boost/math/distributions/students_t.hpp>
+#include <cmath>
+#include <stdexcept>
+
+namespace verity::chi2 {
+
+namespace {
+
+constexpr int kLobes = static_cast<int>(DeltaLobe::Count);
+// The sampling test uses streams 0, 1, …; these are far above them.
+constexpr uint64_t kFirstStream = uint64_t{1} << 62;
+
+// The directions a delta sample may take from wi, by lobe (refraction only with η stated and
+// no total internal reflection; pass-through only without η).
+std::array<std::optional<Vector3d>, kLobes> acceptedDirections(const Vector3d& wi,
+                                                               const std::optional<double>& eta) {
+  std::array<std::optional<Vector3d>, kLobes> out;
+  out[int(DeltaLobe::Reflection)] = Vector3d(-wi.x(), -wi.y(), wi.z());
+  if (!eta) {
+    out[int(DeltaLobe::PassThrough)] = Vector3d(-wi);
+    return out;
+  }
+  // Snell's law from wi's side: t = −wi/η' + (cos θi/η' − cos θt)·n, n the normal on wi's side.
+  const double etaRel = wi.z() > 0 ? *eta : 1 / *eta;
+  const double cosI = std::fabs(wi.z()), sin2T = (1 - cosI * cosI) / (etaRel * etaRel);
+  if (sin2T < 1) {
+    const double cosT = std::sqrt(1 - sin2T), side = wi.z() > 0 ? 1.0 : -1.0;
+    Vector3d t = -wi / etaRel;
+    t.z() += side * (cosI / etaRel - cosT);
+    out[int(DeltaLobe::Refraction)] = t;
+  }
+  return out;
+}
+
+// One chunk's sums.
+struct Partial {
+  std::array<long long, kLobes> count{};
+  std::array<Eigen::Array3d, kLobes> sum, sumSquares;
+  long long wrongDirections = 0;
+  std::string wrongDirectionExample;
+  Audit audit;
+  Partial() {
+    sum.fill(Eigen::Array3d::Zero());
+    sumSquares.fill(Eigen::Array3d::Zero());
+  }
+};
+
+}  // namespace
+
+const char* deltaLobeName(DeltaLobe lobe) {
+  switch (lobe) {
+    case DeltaLobe::Reflection:
+      return "reflection";
+    case DeltaLobe::Refraction:
+      return "refraction";
+    case DeltaLobe::PassThrough:
+      return "pass-through";
+    case DeltaLobe::Count:
+      break;
+  }
+  return "?";
+}
+
+int DeltaCheckOptions::statisticalTests() const {
+  int n = 0;
+  for (const DeltaExpectation& e : expected) n += int(e.share.has_value()) + e.albedo.has_value();
+  return n;
+}
+
+DeltaCheck checkDeltaLobes(const BsdfModel& model, const Eigen::Vector3d& wi,
+                           const DeltaCheckOptions& options, long long samples, double significance,
+                           uint64_t seed) {
+  if (samples < 1)
+    throw std::invalid_argument(
+        fmt::format("the number of samples must be at least 1, not {}", samples));
+  if (!(significance > 0 && significance < 1))
+    throw std::invalid_argument(
+        fmt::format("the per-test significance level must be in (0, 1), not {}", significance));
+  if (options.eta && !(std::isfinite(*options.eta) && *options.eta > 0))
+    throw std::invalid_argument(
+        fmt::format("DeltaCheckOptions::eta must be a finite index above 0, not {}", *options.eta));
+  if (!(options.directionTolerance > 0))
+    throw std::invalid_argument(
+        fmt::format("DeltaCheckOptions::directionTolerance must be above 0, not {}",
+                    options.directionTolerance));
+  for (int k = 0; k < kLobes; ++k) {
+    const DeltaExpectation& e = options.expected[k];
+    if (e.share && !(*e.share >= 0 && *e.share <= 1))
+      throw std::invalid_argument(
+          fmt::format("the expected share of the {} lobe must be in [0, 1], not {}",
+                      deltaLobeName(DeltaLobe(k)), *e.share));
+    if (e.albedo && !(e.albedo->allFinite() && (*e.albedo >= 0).all()))
+      throw std::invalid_argument(
+          fmt::format("the expected albedo of the {} lobe must be finite and non-negative",
+                      deltaLobeName(DeltaLobe(k))));
+  }
+  const auto accepted = acceptedDirections(wi, options.eta);
+
+  // Fixed chunks, one stream each, summed in order: the same result on any number of threads.
+  constexpr long long kChunk = 1 << 16;
+  const long long chunks = (samples + kChunk - 1) / kChunk;
+  std::vector<Partial> partial(chunks);
+  tbb::parallel_for(0LL, chunks, [&](long long c) {
+    pcg32 rng(seed, kFirstStream + static_cast<uint64_t>(c));
+    Partial& p = partial[c];
+    const long long n = std::min(kChunk, samples - c * kChunk);
+    for (long long k = 0; k < n; ++k) {
+      // The draws of BsdfModelSubject::sample: lobe, xy.x, xy.y.
+      BsdfUniforms u;
+      u.lobe = uniform01(rng);
+      u.xy.x = uniform01(rng);
+      u.xy.y = uniform01(rng);
+      const std::optional<DirectionSample> s = model.sample(wi, u);
+      if (!s || !s->delta) continue;
+      auto at = [&] {
+        return fmt::format("wi=({:.7g}) u=({}, {}, {}) wo=({:.7g})",
+                           fmt::join(wi.data(), wi.data() + 3, ", "), u.lobe, u.xy.x, u.xy.y,
+                           fmt::join(s->wo.data(), s->wo.data() + 3, ", "));
+      };
+      if (!s->wo.allFinite()) {
+        p.audit.record(Defect::NonFinite, "delta direction " + at());
+        continue;
+      }
+      if (std::fabs(s->wo.norm() - 1) > 1e-3) {
+        p.audit.record(Defect::NotUnit, "delta direction not a unit vector: " + at());
+        continue;
+      }
+      int lobe = -1;
+      double nearest = INFINITY;
+      for (int l = 0; l < kLobes; ++l) {
+        if (!accepted[l]) continue;
+        const double d = (s->wo - *accepted[l]).norm();
+        if (d < nearest) nearest = d, lobe = l;
+      }
+      if (nearest > options.directionTolerance) {
+        if (p.wrongDirections++ == 0)
+          p.wrongDirectionExample =
+              fmt::format("{}: {:.3g} from the nearest accepted direction ({}){}", at(), nearest,
+                          deltaLobeName(DeltaLobe(lobe)),
+                          options.eta ? "" : "; a refraction needs DeltaCheckOptions::eta");
+        continue;
+      }
+      if (!s->weight.allFinite()) {
+        p.audit.record(Defect::NonFinite,
+                       fmt::format("delta weight ({}, {}, {}) at {}", s->weight[0], s->weight[1],
+                                   s->weight[2], at()));
+        continue;
+      }
+      if (!(s->weight >= 0).all())
+        p.audit.record(Defect::Negative,
+                       fmt::format("delta weight ({}, {}, {}) at {}", s->weight[0], s->weight[1],
+                                   s->weight[2], at()));
+      ++p.count[lobe];
+      p.sum[lobe] += s->weight;
+      p.sumSquares[lobe] += s->weight.square();
+    }
+  });
+
+  DeltaCheck r;
+  r.samples = samples;
+  r.significance = significance;
+  r.components = model.components;
+  r.eta = options.eta;
+  r.directionTolerance = options.directionTolerance;
+  Partial total;
+  for (const Partial& p : partial) {
+    for (int l = 0; l < kLobes; ++l) {
+      total.count[l] += p.count[l];
+      total.sum[l] += p.sum[l];
+      total.sumSquares[l] += p.sumSquares[l];
+    }
+    if (r.wrongDirections == 0) r.wrongDirectionExample = p.wrongDirectionExample;
+    r.wrongDirections += p.wrongDirections;
+    r.audit.merge(p.audit);
+  }
+
+  using boost::math::binomial_distribution;
+  const double n = static_cast<double>(samples), half = significance / 2;
+  // The components of an albedo are one test: each at the Šidák level for their number.
+  const double tQuantile = boost::math::quantile(boost::math::complement(
+      boost::math::students_t(std::max(1.0, n - 1)), sidakLevel(significance, r.components) / 2));
+  for (int l = 0; l < kLobes; ++l) {
+    DeltaLobeResult& lr = r.lobes[l];
+    const long long k = total.count[l];
+    r.deltaSamples += k;
+    lr.count = k;
+    lr.expected = options.expected[l];
+    lr.share = k / n;
+    lr.shareLower = k == 0 ? 0.0 : binomial_distribution<double>::find_lower_bound_on_p(n, k, half);
+    lr.shareUpper =
+        k == samples ? 1.0 : binomial_distribution<double>::find_upper_bound_on_p(n, k, half);
+    if (lr.expected.share)
+      lr.sharePassed = *lr.expected.share >= lr.shareLower && *lr.expected.share <= lr.shareUpper;
+    // weight·1[lobe] over all N draws: its mean and the standard error of that mean.
+    lr.albedo = total.sum[l] / n;
+    const Eigen::Array3d variance =
+        ((total.sumSquares[l] - n * lr.albedo.square()) / std::max(1.0, n - 1)).max(0.0);
+    lr.albedoHalfWidth = tQuantile * (variance / n).sqrt();
+    if (lr.expected.albedo)
+      for (int c = 0; c < r.components; ++c)
+        lr.albedoPassed = lr.albedoPassed &&
+                          std::fabs(lr.albedo[c] - (*lr.expected.albedo)[c]) <=
+                              lr.albedoHalfWidth[c] + kWeightTolerance * (*lr.expected.albedo)[c];
+  }
+  return r;
+}
+
+std::vector<std::string> DeltaCheck::failures() const {
+  std::vector<std::string> out;
+  if (wrongDirections > 0) out.push_back("delta direction");
+  bool share = true, albedo = true;
+  for (const DeltaLobeResult& l : lobes)
+    share = share && l.sharePassed, albedo = albedo && l.albedoPassed;
+  if (!share) out.push_back("delta share");
+  if (!albedo) out.push_back("delta albedo");
+  for (int d = 0; d < static_cast<int>(Defect::Count); ++d)
+    if (audit.count(static_cast<Defect>(d)) > 0)
+      out.push_back(std::string("delta ") + defectName(static_cast<Defect>(d)));
+  return out;
+}
+
+bool DeltaCheck::passed() const {
+  return failures().empty();
+}
+
+std::string DeltaCheck::report() const {
+  std::string s = fmt::format(
+      "  delta lobes, on {} draws of their own: {} delta samples; accepted directions: mirror, "
+      "{}\n",
+      samples, deltaSamples,
+      eta ? fmt::format("refraction for eta {}", *eta)
+          : std::string("straight through (-wi; no eta stated)"));
+  auto value = [&](const Eigen::Array3d& v) {
+    return components == 1 ? fmt::format("{:.6g}", v[0])
+                           : fmt::format("({:.6g}, {:.6g}, {:.6g})", v[0], v[1], v[2]);
+  };
+  const double confidence = 100 * (1 - significance);
+  for (int l = 0; l < kLobes; ++l) {
+    const DeltaLobeResult& r = lobes[l];
+    if (r.count == 0 && !r.expected.share && !r.expected.albedo) continue;
+    s += fmt::format(
+        "  [{}] {}: share {:.6f}, {:.6g}% Clopper-Pearson interval [{:.6f}, {:.6f}]{}\n",
+        r.sharePassed ? "pass" : "FAIL", deltaLobeName(DeltaLobe(l)), r.share, confidence,
+        r.shareLower, r.shareUpper,
+        r.expected.share ? fmt::format(", expected {:.6f}", *r.expected.share) : "");
+    s += fmt::format("  [{}] {}: albedo {} +- {} ({:.6g}% t interval){}\n",
+                     r.albedoPassed ? "pass" : "FAIL", deltaLobeName(DeltaLobe(l)), value(r.albedo),
+                     value(r.albedoHalfWidth), confidence,
+                     r.expected.albedo ? ", expected " + value(*r.expected.albedo) : "");
+  }
+  s += fmt::format("  [{}] delta directions: {} in no accepted direction (tolerance {:.1e}){}\n",
+                   wrongDirections == 0 ? "pass" : "FAIL", wrongDirections, directionTolerance,
+                   wrongDirections == 0 ? "" : "; first: " + wrongDirectionExample);
+  s += fmt::format("  [{}] delta {}", audit.clean() ? "pass" : "FAIL", audit.describe());
+  return s;
+}
+
+}  // namespace verity::chi2

@@ -1,0 +1,152 @@
+// The stochastic mode on toys in their own types: a "layered" Lambertian whose eval and sample
+// weight are unbiased random estimates passes, and fails when either estimate is 2% low; a
+// deterministic Phong lobe checked without its pdf passes, and fails with its weight wrong.
+//
+// Level: the correct subjects are 2 checks of kStatisticalTestsPerStochasticCheck tests, at a
+// family-wise level of 1% with Šidák's correction (per test about 0.0025; per component of
+// the total albedo about 0.00084, z = 3.34). Power: with 400,000 draws and 128 cells of 32 × 32
+// evaluations the layered toy's total albedo has a standard error of about 0.14% of it (the
+// evaluations' 0.13% dominating), so a 2% error is some 14 standard errors (the checks find
+// t = 16.5 and −14.5): power above 1 − 10⁻²⁰ (normal approximation). The test asserts the
+// check's own figure, the smallest error found with 90% power, to be below 1% (it is 0.64%).
+// The Phong lobe's weight is 1.9% low, 29 standard errors.
+#include <gtest/gtest.h>
+#include <verity/chi2/bsdf_adapter.h>
+#include <verity/chi2/significance.h>
+#include <verity/chi2/stochastic_check.h>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <random>
+
+#include "phong_toy.h"
+
+namespace verity::chi2 {
+
+namespace {
+
+using phong_toy::Rgb;
+using phong_toy::Vec3;
+
+enum class Flaw { None, EvalLow, WeightLow, WeightSkewed };
+
+// A Lambertian of albedo (0.8, 0.6, 0.4) whose eval and sample weight are each multiplied by a
+// random factor uniform in [0.5, 1.5) (mean 1) from its own generator, as a layered BSDF's
+// random walk would return them; a Flaw scales one of them by 0.98, or the weight by 1.1 where
+// wo.y > 0 and 0.9 where wo.y < 0 (the same total albedo for wi in the xz plane).
+class LayeredToy {
+ public:
+  LayeredToy(Flaw flaw, uint64_t seed)
+      : flaw_(flaw), rng_(std::make_shared<std::mt19937_64>(seed)) {}
+
+  Rgb eval(const Vec3& wi, const Vec3& wo) const {
+    if (wi.z <= 0 || wo.z <= 0) return {};
+    const double f = factor() / std::numbers::pi * (flaw_ == Flaw::EvalLow ? 0.98 : 1);
+    return {float(0.8 * f), float(0.6 * f), float(0.4 * f)};
+  }
+  std::optional<phong_toy::Sample> sample(const Vec3& wi, double u0, double u1) const {
+    if (wi.z <= 0) return std::nullopt;
+    const double r = std::sqrt(u0), phi = 2 * std::numbers::pi * u1;
+    const Vec3 wo{r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1 - u0))};
+    if (wo.z <= 0) return std::nullopt;
+    double w = factor() * (flaw_ == Flaw::WeightLow ? 0.98 : 1);
+    if (flaw_ == Flaw::WeightSkewed) w *= wo.y > 0 ? 1.1 : 0.9;
+    return phong_toy::Sample{wo, {float(0.8 * w), float(0.6 * w), float(0.4 * w)}, 0};
+  }
+
+ private:
+  double factor() const { return 0.5 + std::uniform_real_distribution<double>()(*rng_); }
+
+  Flaw flaw_;
+  std::shared_ptr<std::mt19937_64> rng_;  // one generator for the model's copies
+};
+
+BsdfModel layeredModel(Flaw flaw, const std::string& name) {
+  const LayeredToy toy(flaw, seedFromName(name + " toy"));
+  // No pdf: the mode does not use one.
+  return bsdfModel<Vec3>(
+      [toy](const Vec3& wi, const BsdfUniforms& u) { return toy.sample(wi, u.xy.x, u.xy.y); },
+      [toy](const Vec3& wi, const Vec3& wo) { return toy.eval(wi, wo); },
+      [](const Vec3&, const Vec3&) { return 0.0; });
+}
+
+constexpr int kCorrectChecks = 2;
+const double kLevel = sidakLevel(0.01, kStatisticalTestsPerStochasticCheck* kCorrectChecks);
+
+StochasticCheckOptions options(const std::string& name) {
+  StochasticCheckOptions o;
+  o.name = "stochastic " + name;
+  o.significance = kLevel;
+  o.samples = 400'000;
+  return o;
+}
+
+const Vec3 kWi{0.5, 0, 0.8660254037844386};
+
+StochasticCheck checkLayered(Flaw flaw, const std::string& name) {
+  const StochasticCheckOptions o = options(name);
+  return checkStochasticBsdf(layeredModel(flaw, o.name), kWi, o);
+}
+
+}  // namespace
+
+TEST(StochasticBsdf, UnbiasedLayeredToyPasses) {
+  const StochasticCheck r = checkLayered(Flaw::None, "layered");
+  EXPECT_EQ(r.verdict(), Verdict::Passed) << r.report();
+  EXPECT_LT(r.detectableTotal, 0.01) << r.report();
+  EXPECT_GT(r.cellTests.size(), 60u * 3) << r.report();
+}
+
+TEST(StochasticBsdf, EvalTwoPercentLowIsRejected) {
+  const StochasticCheck r = checkLayered(Flaw::EvalLow, "layered eval 2% low");
+  EXPECT_EQ(r.verdict(), Verdict::Failed) << r.report();
+  EXPECT_TRUE(r.failed("total albedo")) << r.report();
+}
+
+TEST(StochasticBsdf, SampledWeightTwoPercentLowIsRejected) {
+  const StochasticCheck r = checkLayered(Flaw::WeightLow, "layered weight 2% low");
+  EXPECT_EQ(r.verdict(), Verdict::Failed) << r.report();
+  EXPECT_TRUE(r.failed("total albedo")) << r.report();
+}
+
+// An error of ±10% that leaves the total albedo as it is: the cells find it (each cell's mean
+// is found with 90% power from an error of 7.3%, and some 60 cells hold such an error), and
+// the total, whose null hypothesis is true, passes at its level.
+TEST(StochasticBsdf, LocalErrorIsFoundByTheCells) {
+  const StochasticCheck r = checkLayered(Flaw::WeightSkewed, "layered weight skewed");
+  EXPECT_EQ(r.verdict(), Verdict::Failed) << r.report();
+  EXPECT_TRUE(r.failed("cells")) << r.report();
+  EXPECT_FALSE(r.failed("total albedo")) << r.report();
+}
+
+// A deterministic BSDF without a pdf: the Phong lobe, whose sample weight is right or forgets
+// the ratio (n+2)/(n+1) (about 2% at n = 50).
+TEST(StochasticBsdf, DeterministicBsdfWithoutPdfIsChecked) {
+  for (auto flaw : {phong_toy::Flaw::None, phong_toy::Flaw::Weight}) {
+    const phong_toy::Phong p(50, flaw);
+    const BsdfModel m = bsdfModel<Vec3>(
+        [p](const Vec3& wi, const BsdfUniforms& u) { return p.sample(wi, u.xy.x, u.xy.y); },
+        [p](const Vec3& wi, const Vec3& wo) { return p.eval(wi, wo); },
+        [](const Vec3&, const Vec3&) { return 0.0; });
+    const StochasticCheckOptions o =
+        options(flaw == phong_toy::Flaw::None ? "phong" : "phong weight");
+    const StochasticCheck r = checkStochasticBsdf(m, kWi, o);
+    EXPECT_EQ(r.verdict(), flaw == phong_toy::Flaw::None ? Verdict::Passed : Verdict::Failed)
+        << r.report();
+  }
+}
+
+TEST(StochasticBsdf, BadOptionsAreNamed) {
+  StochasticCheckOptions o = options("bad strata");
+  o.strata = 1;
+  EXPECT_THROW(checkStochasticBsdf(layeredModel(Flaw::None, o.name), kWi, o),
+               std::invalid_argument);
+  o = options("no level");
+  o.significance = 0;
+  EXPECT_THROW(checkStochasticBsdf(layeredModel(Flaw::None, o.name), kWi, o),
+               std::invalid_argument);
+}
+
+}  // namespace verity::chi2
