@@ -23,16 +23,21 @@ BsdfModelSubject::BsdfModelSubject(BsdfModel model, BsdfTestSetup setup)
       setup_(std::move(setup)),
       domain_(sphereDomain(setup_.resolution)) {}
 
+std::string BsdfModelSubject::component(int c) const {
+  return model_.components > 1 ? fmt::format("component {} ", c) : "";
+}
+
 std::string BsdfModelSubject::format(const Eigen::ArrayXd& v) const {
   if (v.size() == 1) return fmt::format("{:.7g}", v[0]);
   return fmt::format("({:.7g})", fmt::join(v.begin(), v.end(), ", "));
 }
 
-bool BsdfModelSubject::sized(const Eigen::ArrayXd& v, const char* what, const std::string& where,
+template <class Where>
+bool BsdfModelSubject::sized(const Eigen::ArrayXd& v, const char* what, Where where,
                              Audit& audit) const {
   if (v.size() == model_.components && v.size() > 0) return true;
   audit.record(Defect::Size, fmt::format("{} {} has {} component(s), the BSDF {}, at {}", what,
-                                         format(v), v.size(), model_.components, where));
+                                         format(v), v.size(), model_.components, where()));
   return false;
 }
 
@@ -68,7 +73,7 @@ std::optional<Point2d> BsdfModelSubject::sample(pcg32& rng, Audit& audit) const 
   }
   const Vector3d& wo = s->wo;
   const Eigen::ArrayXd f = model_.eval(wi, wo);
-  if (!sized(s->weight, "weight", at(), audit) || !sized(f, "eval", at(), audit))
+  if (!sized(s->weight, "weight", at, audit) || !sized(f, "eval", at, audit))
     return sphereCoords(setup_.frame.toWorld(wo));
   if (!s->weight.allFinite() || !std::isfinite(s->pdf))
     audit.record(Defect::NonFinite,
@@ -100,9 +105,9 @@ std::optional<Point2d> BsdfModelSubject::sample(pcg32& rng, Audit& audit) const 
         worst = c;
     if (worst >= 0)
       audit.record(Defect::Weight, ratioDeviation(s->weight[worst], expected[worst]),
-                   fmt::format("weight {} vs eval*|cos|/pdf {} (component {} ratio {:.6f}, "
+                   fmt::format("weight {} vs eval*|cos|/pdf {} ({}ratio {:.6f}, "
                                "tolerance {:g}) at {}",
-                               format(s->weight), format(expected), worst,
+                               format(s->weight), format(expected), component(worst),
                                s->weight[worst] / expected[worst], tolerance, at()));
   }
   if (setup_.checkReciprocity) checkReciprocity(wo, f, audit);
@@ -112,7 +117,7 @@ std::optional<Point2d> BsdfModelSubject::sample(pcg32& rng, Audit& audit) const 
 void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd& f,
                                         Audit& audit) const {
   const Vector3d& wi = setup_.wi;
-  const std::string where = fmt::format("wi={} wo={}", str(wi), str(wo));
+  auto where = [&] { return fmt::format("wi={} wo={}", str(wi), str(wo)); };
   const Eigen::ArrayXd fr = model_.eval(wo, wi);
   const Eigen::ArrayXd fi = model_.evalAdjoint ? model_.evalAdjoint(wi, wo) : fr;
   if (!sized(fr, "eval(wo,wi)", where, audit) || !sized(fi, "evalAdjoint", where, audit)) return;
@@ -127,15 +132,15 @@ void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd
       worst = ratioDeviation(a, b);
       example = fmt::format(
           "eval(wi,wo)*eta_o^2 = {:.7g} vs eval(wo,wi)*eta_i^2 = {:.7g} "
-          "(component {} ratio {:.6f}, tolerance {:g}) {}",
-          a, b, c, a / b, tolerance, where);
+          "({}ratio {:.6f}, tolerance {:g}) {}",
+          a, b, component(c), a / b, tolerance, where());
     }
     if (!relativelyClose(fi[c], fr[c], tolerance) && ratioDeviation(fi[c], fr[c]) > worst) {
       worst = ratioDeviation(fi[c], fr[c]);
       example = fmt::format(
           "importance eval(wi,wo) = {:.7g} vs radiance eval(wo,wi) = {:.7g} "
-          "(component {} ratio {:.6f}, tolerance {:g}) {}",
-          fi[c], fr[c], c, fi[c] / fr[c], tolerance, where);
+          "({}ratio {:.6f}, tolerance {:g}) {}",
+          fi[c], fr[c], component(c), fi[c] / fr[c], tolerance, where());
     }
   }
   if (worst >= 0) audit.record(Defect::Reciprocity, worst, example);
@@ -184,7 +189,8 @@ void BsdfModelSubject::extraChecks(Audit& audit) const {
     for (const BsdfModel::EvalFn* eval : {&model_.eval, &model_.evalAdjoint}) {
       if (!*eval) continue;
       const Eigen::ArrayXd f = (*eval)(setup_.wi, wo);
-      if (!sized(f, "eval", fmt::format("wi={} wo={}", str(setup_.wi), str(wo)), audit)) continue;
+      auto where = [&] { return fmt::format("wi={} wo={}", str(setup_.wi), str(wo)); };
+      if (!sized(f, "eval", where, audit)) continue;
       if (!validValue(f))
         audit.record(f.allFinite() ? Defect::Negative : Defect::NonFinite,
                      fmt::format("eval {} at wi={} wo={}", format(f), str(setup_.wi), str(wo)));

@@ -53,10 +53,13 @@ class BsdfModelSubject : public Subject {
  private:
   // f: eval(wi, wo), already computed by sample().
   void checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd& f, Audit& audit) const;
-  // Whether v has the model's number of components; records the defect where not.
-  bool sized(const Eigen::ArrayXd& v, const char* what, const std::string& where,
-             Audit& audit) const;
+  // Whether v has the model's number of components; records the defect where not, at
+  // where() (formatted only then).
+  template <class Where>
+  bool sized(const Eigen::ArrayXd& v, const char* what, Where where, Audit& audit) const;
   std::string format(const Eigen::ArrayXd& value) const;
+  // "component c " where the BSDF has several, for an example.
+  std::string component(int c) const;
   double indexOn(const Vector3d& w) const {
     return w.z() > 0 ? model_.exteriorIndex : model_.interiorIndex;
   }
