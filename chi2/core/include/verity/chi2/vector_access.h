@@ -123,9 +123,11 @@ namespace detail {
 // The number of components a value type declares at compile time, or 0.
 template <class T, class = void>
 struct DeclaredSize : std::integral_constant<int, 0> {};
-// std::array and any type the caller gave a std::tuple_size.
+// std::array and any type the caller gave a std::tuple_size (Eigen's own size below, should
+// a version of Eigen give its vectors one too).
 template <class T>
-struct DeclaredSize<T, std::void_t<decltype(std::tuple_size<T>::value)>>
+struct DeclaredSize<T, std::void_t<decltype(std::tuple_size<T>::value),
+                                   std::enable_if_t<!std::is_base_of_v<Eigen::EigenBase<T>, T>>>>
     : std::integral_constant<int, int(std::tuple_size<T>::value)> {};
 // Eigen's fixed-size vectors and arrays (a dynamic one declares -1: read at run time).
 template <class T>
@@ -153,8 +155,9 @@ struct ValueSize : detail::DeclaredSize<T> {};
 //   a size known at compile time       ValueSize<T> components through [i]: std::array,
 //                                      Eigen's fixed vectors, a specialised ValueSize
 //   .x/.y/.z or .r/.g/.b               three components (an RGB colour)
-//   a run-time size() and [i]          std::vector, Eigen::VectorXd: kComponents is 0, and the
-//                                      check compares each value's size with the first's
+//   a run-time size() and [i]          std::vector, Eigen::VectorXd: kComponents is 0, and
+//                                      checkBsdf holds every value to the size of eval at
+//                                      wi's mirror direction
 // A spectral value (several wavelengths) is one of the first two.
 template <class T>
 struct ValueAccess {
