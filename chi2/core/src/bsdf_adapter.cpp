@@ -2,18 +2,40 @@
 #include <verity/chi2/bsdf_adapter.h>
 #include <verity/chi2/bsdf_model_subject.h>
 
+#include <stdexcept>
+#include <utility>
+
 namespace verity::chi2 {
+
+namespace {
+
+void requireTolerance(double value, const char* option) {
+  if (!(value >= 0 && value < 1))
+    throw std::invalid_argument(fmt::format(
+        "BsdfCheckOptions::{} = {}: a relative tolerance must be in [0, 1)", option, value));
+}
+
+}  // namespace
 
 CheckResult checkBsdf(const BsdfModel& model, const Eigen::Vector3d& wi,
                       const BsdfCheckOptions& options) {
+  requireTolerance(options.weightTolerance, "weightTolerance");
+  requireTolerance(options.reciprocityTolerance, "reciprocityTolerance");
   BsdfTestSetup setup;
   setup.wi = wi.normalized();
+  setup.weightTolerance = options.weightTolerance;
+  setup.reciprocityTolerance = options.reciprocityTolerance;
+  BsdfModel sized = model;
+  if (sized.components == 0) {
+    const Eigen::Vector3d mirror(-setup.wi.x(), -setup.wi.y(), setup.wi.z());
+    sized.components = static_cast<int>(model.eval(setup.wi, mirror).size());
+  }
   setup.name =
       fmt::format("{}, wi ({:.4f}, {:.4f}, {:.4f})", options.name.empty() ? "bsdf" : options.name,
                   setup.wi.x(), setup.wi.y(), setup.wi.z());
   setup.resolution = options.resolution > 0 ? options.resolution : 32;
   setup.checkReciprocity = options.checkReciprocity;
-  const BsdfModelSubject subject(model, setup);
+  const BsdfModelSubject subject(std::move(sized), setup);
   CheckResult r = runCheck(subject, options, setup.name);
   r.deltaSamples = subject.deltaSamples();
   // The delta lobes, which the histogram leaves out, on a pass of their own.

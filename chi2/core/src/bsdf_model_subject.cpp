@@ -1,4 +1,5 @@
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <verity/chi2/bsdf_model_subject.h>
 
 #include <cmath>
@@ -11,7 +12,7 @@ std::string str(const Vector3d& v) {
   return fmt::format("({:.7g}, {:.7g}, {:.7g})", v.x(), v.y(), v.z());
 }
 
-bool validValue(const Eigen::Array3d& v) {
+bool validValue(const Eigen::ArrayXd& v) {
   return v.allFinite() && (v >= 0).all();
 }
 
@@ -22,9 +23,22 @@ BsdfModelSubject::BsdfModelSubject(BsdfModel model, BsdfTestSetup setup)
       setup_(std::move(setup)),
       domain_(sphereDomain(setup_.resolution)) {}
 
-std::string BsdfModelSubject::format(const Eigen::Array3d& v) const {
-  if (model_.components == 1) return fmt::format("{:.7g}", v[0]);
-  return fmt::format("({:.7g}, {:.7g}, {:.7g})", v[0], v[1], v[2]);
+std::string BsdfModelSubject::component(int c) const {
+  return model_.components > 1 ? fmt::format("component {} ", c) : "";
+}
+
+std::string BsdfModelSubject::format(const Eigen::ArrayXd& v) const {
+  if (v.size() == 1) return fmt::format("{:.7g}", v[0]);
+  return fmt::format("({:.7g})", fmt::join(v.begin(), v.end(), ", "));
+}
+
+template <class Where>
+bool BsdfModelSubject::sized(const Eigen::ArrayXd& v, const char* what, Where where,
+                             Audit& audit) const {
+  if (v.size() == model_.components && v.size() > 0) return true;
+  audit.record(Defect::Size, fmt::format("{} {} has {} component(s), the BSDF {}, at {}", what,
+                                         format(v), v.size(), model_.components, where()));
+  return false;
 }
 
 double BsdfModelSubject::pdf(double phi, double z) const {
@@ -58,6 +72,9 @@ std::optional<Point2d> BsdfModelSubject::sample(pcg32& rng, Audit& audit) const 
     return std::nullopt;
   }
   const Vector3d& wo = s->wo;
+  const Eigen::ArrayXd f = model_.eval(wi, wo);
+  if (!sized(s->weight, "weight", at, audit) || !sized(f, "eval", at, audit))
+    return sphereCoords(setup_.frame.toWorld(wo));
   if (!s->weight.allFinite() || !std::isfinite(s->pdf))
     audit.record(Defect::NonFinite,
                  fmt::format("weight {} pdf {} at {}", format(s->weight), s->pdf, at()));
@@ -66,55 +83,67 @@ std::optional<Point2d> BsdfModelSubject::sample(pcg32& rng, Audit& audit) const 
                  fmt::format("weight {} pdf {} (a returned sample needs pdf > 0) at {}",
                              format(s->weight), s->pdf, at()));
 
-  const Eigen::Array3d f = model_.eval(wi, wo);
   const double p = model_.pdf(wi, wo);
   if (!f.allFinite() || !std::isfinite(p))
     audit.record(Defect::NonFinite, fmt::format("eval {} pdf() {} at {}", format(f), p, at()));
   else if (!(f >= 0).all() || p < 0)
     audit.record(Defect::Negative, fmt::format("eval {} pdf() {} at {}", format(f), p, at()));
   else {
-    if (!relativelyClose(s->pdf, p, kWeightTolerance))
-      audit.record(Defect::SamplePdf, fmt::format("sample pdf {} vs pdf() {} (ratio {:.6f}) at {}",
-                                                  s->pdf, p, s->pdf / p, at()));
-    const Eigen::Array3d expected =
-        p > 0 ? Eigen::Array3d(f * std::fabs(wo.z()) / p) : Eigen::Array3d::Zero();
-    for (int c = 0; c < 3; ++c) {
-      if (!relativelyClose(s->weight[c], expected[c], kWeightTolerance)) {
-        audit.record(
-            Defect::Weight,
-            fmt::format("weight {} vs eval*|cos|/pdf {} (ratio {:.6f}) at {}", format(s->weight),
-                        format(expected), s->weight[c] / expected[c], at()));
-        break;
-      }
-    }
+    const double tolerance = setup_.weightTolerance;
+    if (!relativelyClose(s->pdf, p, tolerance))
+      audit.record(Defect::SamplePdf, ratioDeviation(s->pdf, p),
+                   fmt::format("sample pdf {} vs pdf() {} (ratio {:.6f}, tolerance {:g}) at {}",
+                               s->pdf, p, s->pdf / p, tolerance, at()));
+    const Eigen::ArrayXd expected =
+        p > 0 ? Eigen::ArrayXd(f * std::fabs(wo.z()) / p) : Eigen::ArrayXd::Zero(f.size());
+    // The worst component, where any is beyond the tolerance.
+    int worst = -1;
+    for (int c = 0; c < f.size(); ++c)
+      if (!relativelyClose(s->weight[c], expected[c], tolerance) &&
+          (worst < 0 || ratioDeviation(s->weight[c], expected[c]) >
+                            ratioDeviation(s->weight[worst], expected[worst])))
+        worst = c;
+    if (worst >= 0)
+      audit.record(Defect::Weight, ratioDeviation(s->weight[worst], expected[worst]),
+                   fmt::format("weight {} vs eval*|cos|/pdf {} ({}ratio {:.6f}, "
+                               "tolerance {:g}) at {}",
+                               format(s->weight), format(expected), component(worst),
+                               s->weight[worst] / expected[worst], tolerance, at()));
   }
   if (setup_.checkReciprocity) checkReciprocity(wo, f, audit);
   return sphereCoords(setup_.frame.toWorld(wo));
 }
 
-void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::Array3d& f,
+void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd& f,
                                         Audit& audit) const {
   const Vector3d& wi = setup_.wi;
-  const Eigen::Array3d fr = model_.eval(wo, wi);
-  const Eigen::Array3d fi = model_.evalAdjoint ? model_.evalAdjoint(wi, wo) : fr;
+  auto where = [&] { return fmt::format("wi={} wo={}", str(wi), str(wo)); };
+  const Eigen::ArrayXd fr = model_.eval(wo, wi);
+  const Eigen::ArrayXd fi = model_.evalAdjoint ? model_.evalAdjoint(wi, wo) : fr;
+  if (!sized(fr, "eval(wo,wi)", where, audit) || !sized(fi, "evalAdjoint", where, audit)) return;
   const double etaI = indexOn(wi), etaO = indexOn(wo);
-  for (int c = 0; c < 3; ++c) {
+  const double tolerance = setup_.reciprocityTolerance;
+  // The worst component of either comparison, where any is beyond the tolerance.
+  double worst = -1;
+  std::string example;
+  for (int c = 0; c < f.size(); ++c) {
     const double a = f[c] * etaO * etaO, b = fr[c] * etaI * etaI;
-    if (!relativelyClose(a, b, kReciprocityTolerance)) {
-      audit.record(Defect::Reciprocity,
-                   fmt::format("eval(wi,wo)*eta_o^2 = {:.7g} vs eval(wo,wi)*eta_i^2 = {:.7g} "
-                               "(ratio {:.6f}) wi={} wo={}",
-                               a, b, a / b, str(wi), str(wo)));
-      return;
+    if (!relativelyClose(a, b, tolerance) && ratioDeviation(a, b) > worst) {
+      worst = ratioDeviation(a, b);
+      example = fmt::format(
+          "eval(wi,wo)*eta_o^2 = {:.7g} vs eval(wo,wi)*eta_i^2 = {:.7g} "
+          "({}ratio {:.6f}, tolerance {:g}) {}",
+          a, b, component(c), a / b, tolerance, where());
     }
-    if (!relativelyClose(fi[c], fr[c], kReciprocityTolerance)) {
-      audit.record(Defect::Reciprocity,
-                   fmt::format("importance eval(wi,wo) = {:.7g} vs radiance eval(wo,wi) = {:.7g} "
-                               "(ratio {:.6f}) wi={} wo={}",
-                               fi[c], fr[c], fi[c] / fr[c], str(wi), str(wo)));
-      return;
+    if (!relativelyClose(fi[c], fr[c], tolerance) && ratioDeviation(fi[c], fr[c]) > worst) {
+      worst = ratioDeviation(fi[c], fr[c]);
+      example = fmt::format(
+          "importance eval(wi,wo) = {:.7g} vs radiance eval(wo,wi) = {:.7g} "
+          "({}ratio {:.6f}, tolerance {:g}) {}",
+          fi[c], fr[c], component(c), fi[c] / fr[c], tolerance, where());
     }
   }
+  if (worst >= 0) audit.record(Defect::Reciprocity, worst, example);
 }
 
 std::vector<double> BsdfModelSubject::breakpointsY(double phi) const {
@@ -159,7 +188,9 @@ void BsdfModelSubject::extraChecks(Audit& audit) const {
     const Vector3d wo = setup_.frame.toLocal(sphereDirection(phi, z));
     for (const BsdfModel::EvalFn* eval : {&model_.eval, &model_.evalAdjoint}) {
       if (!*eval) continue;
-      const Eigen::Array3d f = (*eval)(setup_.wi, wo);
+      const Eigen::ArrayXd f = (*eval)(setup_.wi, wo);
+      auto where = [&] { return fmt::format("wi={} wo={}", str(setup_.wi), str(wo)); };
+      if (!sized(f, "eval", where, audit)) continue;
       if (!validValue(f))
         audit.record(f.allFinite() ? Defect::Negative : Defect::NonFinite,
                      fmt::format("eval {} at wi={} wo={}", format(f), str(setup_.wi), str(wo)));

@@ -40,18 +40,27 @@ std::array<std::optional<Vector3d>, kLobes> acceptedDirections(const Vector3d& w
   return out;
 }
 
-// One chunk's sums.
+// One chunk's sums, per component; sized by the first weight the chunk sees (or the model's
+// count of components where it states one).
 struct Partial {
   std::array<long long, kLobes> count{};
-  std::array<Eigen::Array3d, kLobes> sum, sumSquares;
+  std::array<Eigen::ArrayXd, kLobes> sum, sumSquares;
   long long wrongDirections = 0;
   std::string wrongDirectionExample;
   Audit audit;
-  Partial() {
-    sum.fill(Eigen::Array3d::Zero());
-    sumSquares.fill(Eigen::Array3d::Zero());
+  int components() const { return static_cast<int>(sum[0].size()); }
+  void size(int components) {
+    for (int l = 0; l < kLobes; ++l) {
+      sum[l] = Eigen::ArrayXd::Zero(components);
+      sumSquares[l] = Eigen::ArrayXd::Zero(components);
+    }
   }
 };
+
+std::string formatValue(const Eigen::ArrayXd& v) {
+  return v.size() == 1 ? fmt::format("{:.6g}", v[0])
+                       : fmt::format("({:.6g})", fmt::join(v.data(), v.data() + v.size(), ", "));
+}
 
 }  // namespace
 
@@ -97,7 +106,7 @@ DeltaCheck checkDeltaLobes(const BsdfModel& model, const Eigen::Vector3d& wi,
       throw std::invalid_argument(
           fmt::format("the expected share of the {} lobe must be in [0, 1], not {}",
                       deltaLobeName(DeltaLobe(k)), *e.share));
-    if (e.albedo && !(e.albedo->allFinite() && (*e.albedo >= 0).all()))
+    if (e.albedo && !(e.albedo->size() > 0 && e.albedo->allFinite() && (*e.albedo >= 0).all()))
       throw std::invalid_argument(
           fmt::format("the expected albedo of the {} lobe must be finite and non-negative",
                       deltaLobeName(DeltaLobe(k))));
@@ -111,6 +120,7 @@ DeltaCheck checkDeltaLobes(const BsdfModel& model, const Eigen::Vector3d& wi,
   tbb::parallel_for(0LL, chunks, [&](long long c) {
     pcg32 rng(seed, kFirstStream + static_cast<uint64_t>(c));
     Partial& p = partial[c];
+    if (model.components > 0) p.size(model.components);
     const long long n = std::min(kChunk, samples - c * kChunk);
     for (long long k = 0; k < n; ++k) {
       // The draws of BsdfModelSubject::sample: lobe, xy.x, xy.y.
@@ -148,16 +158,20 @@ DeltaCheck checkDeltaLobes(const BsdfModel& model, const Eigen::Vector3d& wi,
                           options.eta ? "" : "; a refraction needs DeltaCheckOptions::eta");
         continue;
       }
+      if (p.components() == 0 && s->weight.size() > 0) p.size(static_cast<int>(s->weight.size()));
+      if (s->weight.size() != p.components()) {
+        p.audit.record(Defect::Size, fmt::format("delta weight of {} components, not {}, at {}",
+                                                 s->weight.size(), p.components(), at()));
+        continue;
+      }
       if (!s->weight.allFinite()) {
         p.audit.record(Defect::NonFinite,
-                       fmt::format("delta weight ({}, {}, {}) at {}", s->weight[0], s->weight[1],
-                                   s->weight[2], at()));
+                       fmt::format("delta weight {} at {}", formatValue(s->weight), at()));
         continue;
       }
       if (!(s->weight >= 0).all())
         p.audit.record(Defect::Negative,
-                       fmt::format("delta weight ({}, {}, {}) at {}", s->weight[0], s->weight[1],
-                                   s->weight[2], at()));
+                       fmt::format("delta weight {} at {}", formatValue(s->weight), at()));
       ++p.count[lobe];
       p.sum[lobe] += s->weight;
       p.sumSquares[lobe] += s->weight.square();
@@ -167,19 +181,38 @@ DeltaCheck checkDeltaLobes(const BsdfModel& model, const Eigen::Vector3d& wi,
   DeltaCheck r;
   r.samples = samples;
   r.significance = significance;
-  r.components = model.components;
   r.eta = options.eta;
   r.directionTolerance = options.directionTolerance;
+  // The components: the model's, else the first chunk's that saw a delta weight; a chunk of
+  // another size is a defect, its sums left out.
+  r.components = model.components;
+  for (const Partial& p : partial)
+    if (r.components == 0) r.components = p.components();
+  r.components = std::max(1, r.components);
   Partial total;
+  total.size(r.components);
   for (const Partial& p : partial) {
-    for (int l = 0; l < kLobes; ++l) {
-      total.count[l] += p.count[l];
-      total.sum[l] += p.sum[l];
-      total.sumSquares[l] += p.sumSquares[l];
+    if (p.components() == r.components) {
+      for (int l = 0; l < kLobes; ++l) {
+        total.count[l] += p.count[l];
+        total.sum[l] += p.sum[l];
+        total.sumSquares[l] += p.sumSquares[l];
+      }
+    } else if (p.components() > 0) {
+      r.audit.record(Defect::Size, fmt::format("delta weights of {} components, not {}",
+                                               p.components(), r.components));
     }
     if (r.wrongDirections == 0) r.wrongDirectionExample = p.wrongDirectionExample;
     r.wrongDirections += p.wrongDirections;
     r.audit.merge(p.audit);
+  }
+
+  for (int l = 0; l < kLobes; ++l) {
+    const std::optional<Eigen::ArrayXd>& e = options.expected[l].albedo;
+    if (e && e->size() != 1 && e->size() != r.components)
+      throw std::invalid_argument(fmt::format(
+          "the expected albedo of the {} lobe has {} components; the BSDF's weights have {}",
+          deltaLobeName(DeltaLobe(l)), e->size(), r.components));
   }
 
   using boost::math::binomial_distribution;
@@ -201,14 +234,17 @@ DeltaCheck checkDeltaLobes(const BsdfModel& model, const Eigen::Vector3d& wi,
       lr.sharePassed = *lr.expected.share >= lr.shareLower && *lr.expected.share <= lr.shareUpper;
     // weight·1[lobe] over all N draws: its mean and the standard error of that mean.
     lr.albedo = total.sum[l] / n;
-    const Eigen::Array3d variance =
+    const Eigen::ArrayXd variance =
         ((total.sumSquares[l] - n * lr.albedo.square()) / std::max(1.0, n - 1)).max(0.0);
     lr.albedoHalfWidth = tQuantile * (variance / n).sqrt();
     if (lr.expected.albedo)
-      for (int c = 0; c < r.components; ++c)
-        lr.albedoPassed = lr.albedoPassed &&
-                          std::fabs(lr.albedo[c] - (*lr.expected.albedo)[c]) <=
-                              lr.albedoHalfWidth[c] + kWeightTolerance * (*lr.expected.albedo)[c];
+      for (int c = 0; c < r.components; ++c) {
+        const Eigen::ArrayXd& e = *lr.expected.albedo;
+        const double expected = e.size() == 1 ? e[0] : e[c];
+        lr.albedoPassed =
+            lr.albedoPassed && std::fabs(lr.albedo[c] - expected) <=
+                                   lr.albedoHalfWidth[c] + kWeightTolerance * expected;
+      }
   }
   return r;
 }
@@ -238,10 +274,7 @@ std::string DeltaCheck::report() const {
       samples, deltaSamples,
       eta ? fmt::format("refraction for eta {}", *eta)
           : std::string("straight through (-wi; no eta stated)"));
-  auto value = [&](const Eigen::Array3d& v) {
-    return components == 1 ? fmt::format("{:.6g}", v[0])
-                           : fmt::format("({:.6g}, {:.6g}, {:.6g})", v[0], v[1], v[2]);
-  };
+  const auto value = [](const Eigen::ArrayXd& v) { return formatValue(v); };
   const double confidence = 100 * (1 - significance);
   for (int l = 0; l < kLobes; ++l) {
     const DeltaLobeResult& r = lobes[l];

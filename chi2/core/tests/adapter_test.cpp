@@ -150,7 +150,7 @@ TEST(VectorAccess, ReadsAndMakesEachKindOfType) {
   EXPECT_EQ(readVector3(makeVector3<Eigen::Vector3f>(p)), p);
   EXPECT_EQ(readVector2(Uniform2{0.25, 0.75}.operator Eigen::Vector2f()),
             Eigen::Vector2d(0.25, 0.75));
-  EXPECT_EQ(ValueAccess<float>::read(0.5f).matrix(), Eigen::Vector3d::Constant(0.5));
+  EXPECT_EQ(ValueAccess<float>::read(0.5f).matrix(), Eigen::VectorXd::Constant(1, 0.5));
 }
 
 // Toy warps, written from the formulas.

@@ -143,10 +143,10 @@ Vec3 incidence(double degrees) {
   return {std::sin(t), 0, std::cos(t)};
 }
 
-// Correct checks: mirror, glass from outside and inside, thin glass, coated diffuse; their
-// tests: 2 each, and 4 + 4 + 4 + 2 stated shares and albedos.
-constexpr int kCorrectChecks = 5;
-constexpr int kCorrectTests = kStatisticalTestsPerCheck * kCorrectChecks + 14;
+// Correct checks: mirror, spectral mirror, glass from outside and inside, thin glass, coated
+// diffuse; their tests: 2 each, and 1 + 4 + 4 + 4 + 2 stated shares and albedos.
+constexpr int kCorrectChecks = 6;
+constexpr int kCorrectTests = kStatisticalTestsPerCheck * kCorrectChecks + 15;
 const double kLevel = sidakLevel(0.01, kCorrectTests);
 constexpr long long kSamples = 100'000;
 
@@ -163,8 +163,8 @@ BsdfCheckOptions options(const std::string& name) {
 void expectGlass(BsdfCheckOptions& o, const Vec3& wi, double eta) {
   const double r = fresnel(wi.z, eta), e = wi.z > 0 ? eta : 1 / eta;
   o.delta.eta = eta;
-  o.delta.expect(DeltaLobe::Reflection) = {r, Eigen::Array3d::Constant(r)};
-  o.delta.expect(DeltaLobe::Refraction) = {1 - r, Eigen::Array3d::Constant((1 - r) / (e * e))};
+  o.delta.expect(DeltaLobe::Reflection) = {r, Eigen::ArrayXd::Constant(1, r)};
+  o.delta.expect(DeltaLobe::Refraction) = {1 - r, Eigen::ArrayXd::Constant(1, (1 - r) / (e * e))};
 }
 
 std::string failed(const CheckResult& r) {
@@ -185,6 +185,30 @@ TEST(DeltaLobes, SmoothMirrorPasses) {
   EXPECT_NEAR(r.delta.lobes[int(DeltaLobe::Reflection)].albedo[1], 0.8, 1e-7);
 }
 
+// A spectral mirror: four wavelengths, each with its own reflectance, held to a stated albedo
+// per wavelength. (Its weights once went into three-component sums.)
+TEST(DeltaLobes, SpectralMirrorIsCheckedPerWavelength) {
+  const auto model = [](double last) {
+    return bsdfModel<Vec3>(
+        [last](const Vec3& wi, const BsdfUniforms&) {
+          return std::optional(SampledDirection<Vec3, std::array<double, 4>>{
+              mirror(wi), {0.9, 0.8, 0.7, last}, 1, true});
+        },
+        [](const Vec3&, const Vec3&) { return std::array<double, 4>{}; },
+        [](const Vec3&, const Vec3&) { return 0.0; });
+  };
+  BsdfCheckOptions o = options("spectral mirror");
+  Eigen::ArrayXd albedo(4);
+  albedo << 0.9, 0.8, 0.7, 0.6;
+  o.delta.expect(DeltaLobe::Reflection).albedo = albedo;
+  const CheckResult right = checkBsdf(model(0.6), incidence(30), o);
+  EXPECT_EQ(right.verdict(), Verdict::Passed) << failed(right);
+  ASSERT_EQ(right.delta.lobes[int(DeltaLobe::Reflection)].albedo.size(), 4);
+  EXPECT_NEAR(right.delta.lobes[int(DeltaLobe::Reflection)].albedo[3], 0.6, 1e-12);
+  const CheckResult wrong = checkBsdf(model(0.5), incidence(30), o);
+  EXPECT_TRUE(wrong.failed("delta albedo")) << failed(wrong);
+}
+
 TEST(DeltaLobes, SmoothGlassPassesFromBothSides) {
   for (double degrees : {45.0, 150.0}) {
     const Vec3 wi = incidence(degrees);
@@ -201,8 +225,8 @@ TEST(DeltaLobes, ThinGlassPasses) {
   const Vec3 wi = incidence(60);
   BsdfCheckOptions o = options("thin glass");
   const double r = g.reflectance(wi);
-  o.delta.expect(DeltaLobe::Reflection) = {r, Eigen::Array3d::Constant(r)};
-  o.delta.expect(DeltaLobe::PassThrough) = {1 - r, Eigen::Array3d::Constant(1 - r)};
+  o.delta.expect(DeltaLobe::Reflection) = {r, Eigen::ArrayXd::Constant(1, r)};
+  o.delta.expect(DeltaLobe::PassThrough) = {1 - r, Eigen::ArrayXd::Constant(1, 1 - r)};
   const CheckResult c = checkBsdf(
       deltaModel([g](const Vec3& wi, const BsdfUniforms& u) { return g.sample(wi, u.lobe); }), wi,
       o);
@@ -219,7 +243,7 @@ TEST(DeltaLobes, MixedBsdfHistogramsItsDiffusePartAndChecksItsDeltaPart) {
       [c](const Vec3& wi, const Vec3& wo) { return c.pdf(wi, wo); });
   BsdfCheckOptions o = options("coated diffuse");
   o.delta.expect(DeltaLobe::Reflection) = {CoatedDiffuse::kCoat,
-                                           Eigen::Array3d::Constant(CoatedDiffuse::kCoat)};
+                                           Eigen::ArrayXd::Constant(1, CoatedDiffuse::kCoat)};
   const CheckResult r = checkBsdf(m, incidence(40), o);
   EXPECT_EQ(r.verdict(), Verdict::Passed) << failed(r);
   EXPECT_FALSE(r.test.chiSquare.degenerate) << failed(r);

@@ -1,7 +1,9 @@
 // Deterministic per-sample checks (no statistics): a value that is NaN, infinite or
 // negative, a weight that disagrees with eval·|cos|/pdf, a sample pdf that disagrees with
-// pdf(), a reciprocity violation, a sampled direction that is not a unit vector. Each kind
-// keeps a count and its first example.
+// pdf(), a reciprocity violation, a sampled direction that is not a unit vector, a value of
+// the wrong size. Each kind keeps a count and its first example; the three comparisons keep
+// their worst |ratio − 1| too, with its example, so that float rounding (a worst of 3·10⁻⁴)
+// reads apart from a bug (a worst of 0.5).
 #pragma once
 
 #include <array>
@@ -12,15 +14,17 @@ namespace verity::chi2 {
 enum class Defect {
   NonFinite,    // NaN or ±Inf from eval, pdf, weight or a sampled direction
   Negative,     // a negative eval, pdf or weight
-  Weight,       // weight ≠ eval·|cos θo| / pdf beyond kWeightTolerance
-  SamplePdf,    // sample().pdf ≠ pdf(wi, wo) beyond kWeightTolerance
-  Reciprocity,  // eval(wi,wo)·ηo² ≠ eval(wo,wi)·ηi² beyond kReciprocityTolerance
+  Weight,       // weight ≠ eval·|cos θo| / pdf beyond the weight tolerance
+  SamplePdf,    // sample().pdf ≠ pdf(wi, wo) beyond the weight tolerance
+  Reciprocity,  // eval(wi,wo)·ηo² ≠ eval(wo,wi)·ηi² beyond the reciprocity tolerance
   NotUnit,      // a sampled direction whose length is not 1 (to 1e-3)
+  Size,         // a value whose number of components differs from the BSDF's
   Count
 };
 
-inline constexpr double kWeightTolerance = 1e-4;       // relative
-inline constexpr double kReciprocityTolerance = 1e-3;  // relative
+// The default relative tolerances (BsdfCheckOptions sets others).
+inline constexpr double kWeightTolerance = 1e-4;
+inline constexpr double kReciprocityTolerance = 1e-3;
 // Values below this are compared absolutely (weights and densities are O(1) or larger).
 inline constexpr double kAbsoluteFloor = 1e-6;
 
@@ -30,17 +34,28 @@ const char* defectName(Defect d);
 // |a − b| ≤ rel · max(|a|, |b|) + floor·rel
 bool relativelyClose(double a, double b, double rel);
 
+// |a/b − 1|, the deviation of a from its reference b: 0 where both are 0, +∞ where only b is.
+double ratioDeviation(double a, double b);
+
 class Audit {
  public:
   void record(Defect d, const std::string& example);
+  // A failed comparison whose |ratio − 1| is `deviation` (+∞ where the reference is 0).
+  void record(Defect d, double deviation, const std::string& example);
   void merge(const Audit& other);
   long long count(Defect d) const { return counts_[static_cast<int>(d)]; }
+  // The largest deviation recorded for d, and where; 0 and "" when none was.
+  double worst(Defect d) const { return worst_[static_cast<int>(d)]; }
+  const std::string& worstExample(Defect d) const { return worstExamples_[static_cast<int>(d)]; }
   bool clean() const;
   std::string describe() const;
 
  private:
-  std::array<long long, static_cast<int>(Defect::Count)> counts_{};
-  std::array<std::string, static_cast<int>(Defect::Count)> examples_{};
+  static constexpr int kKinds = static_cast<int>(Defect::Count);
+  std::array<long long, kKinds> counts_{};
+  std::array<std::string, kKinds> examples_{};
+  std::array<double, kKinds> worst_{};
+  std::array<std::string, kKinds> worstExamples_{};
 };
 
 }  // namespace verity::chi2

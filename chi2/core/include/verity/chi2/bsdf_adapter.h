@@ -1,6 +1,7 @@
 // Checking a BSDF written in another renderer's own types. The caller gives three callables
-// in its own vector type V (any 3-vector vector_access.h reads) and value type (a scalar or
-// three components):
+// in its own vector type V (any 3-vector vector_access.h reads) and value type (a scalar, RGB
+// or any number of spectral samples, fixed or sized at run time: ValueAccess in
+// vector_access.h):
 //
 //   sample(const V& wi, const BsdfUniforms& u) -> std::optional<S>, S having members
 //       wo (V), weight (value), pdf (a number) and optionally delta (bool), e.g.
@@ -14,24 +15,32 @@
 // runs on Verity's materials, for one incident direction:
 //   chi-square       the histogram of sampled directions against ∫pdf over each cell
 //   pdf integral     ∫pdf over the sphere against the fraction of valid samples
-//   per sample       weight = eval·|cos θo|/pdf, sample pdf = pdf(), unit finite wo,
-//                    no NaN, Inf or negative value, reciprocity (with the indices)
+//   per sample       weight = eval·|cos θo|/pdf, sample pdf = pdf() (to weightTolerance),
+//                    unit finite wo, no NaN, Inf or negative value, every value of the
+//                    same size, reciprocity (with the indices, to reciprocityTolerance);
+//                    each component by itself
 //   delta lobes      each delta sample's direction (mirror, refraction for options.delta.eta
 //                    or straight through) and weight; each lobe's share and albedo, against
 //                    the caller's expectations where stated (delta_check.h)
-// Each is a statistical test at `significance`, chosen by the caller; see check_result.h.
+// The first two and each stated delta expectation are statistical tests at `significance`,
+// chosen by the caller; see check_result.h. A renderer whose sample() draws the incident
+// direction and returns f and pdf (pbrt's Sample_f) uses bsdfModelFromSampleF
+// (sample_f_adapter.h) instead of bsdfModel.
 //
 //   auto model = verity::chi2::bsdfModel<Vec3>(sample, eval, pdf);
 //   CheckResult r = checkBsdf(model, Vec3{0.5, 0, 0.866}, options);
 //   if (!r.passed()) std::cout << r.report();
 #pragma once
 
+#include <verity/chi2/audit.h>
 #include <verity/chi2/bsdf_model.h>
 #include <verity/chi2/check_result.h>
+#include <verity/chi2/vector_access.h>
 
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 namespace verity::chi2 {
 
@@ -56,17 +65,39 @@ struct IsOptional : std::false_type {};
 template <class T>
 struct IsOptional<std::optional<T>> : std::true_type {};
 
+template <class S>
+bool sampledDelta(const S& s) {
+  if constexpr (HasDelta<S>::value)
+    return bool(s.delta);
+  else
+    return false;
+}
+
+// A model without its sample(): eval and pdf of the caller's callables, taking their
+// arguments in the order given, and the number of components of eval's value.
+template <class V, class EvalFn, class PdfFn>
+BsdfModel evalAndPdf(EvalFn eval, PdfFn pdf) {
+  using Value = std::decay_t<decltype(eval(std::declval<const V&>(), std::declval<const V&>()))>;
+  BsdfModel m;
+  m.components = ValueAccess<Value>::kComponents;
+  m.eval = [eval](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    return ValueAccess<Value>::read(eval(makeVector3<V>(a), makeVector3<V>(b)));
+  };
+  m.pdf = [pdf](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    return static_cast<double>(pdf(makeVector3<V>(a), makeVector3<V>(b)));
+  };
+  return m;
+}
+
 }  // namespace detail
 
 // The model of callables in the caller's vector type V.
 template <class V, class SampleFn, class EvalFn, class PdfFn>
 BsdfModel bsdfModel(SampleFn sample, EvalFn eval, PdfFn pdf) {
-  using Value = std::decay_t<decltype(eval(std::declval<const V&>(), std::declval<const V&>()))>;
   using Result = std::decay_t<decltype(sample(std::declval<const V&>(), BsdfUniforms{}))>;
   static_assert(detail::IsOptional<Result>::value,
                 "sample(wi, u) must return a std::optional: nothing when it fails");
-  BsdfModel m;
-  m.components = ValueAccess<Value>::kComponents;
+  BsdfModel m = detail::evalAndPdf<V>(std::move(eval), std::move(pdf));
   m.sample = [sample](const Eigen::Vector3d& wi,
                       const BsdfUniforms& u) -> std::optional<DirectionSample> {
     const Result s = sample(makeVector3<V>(wi), u);
@@ -76,14 +107,8 @@ BsdfModel bsdfModel(SampleFn sample, EvalFn eval, PdfFn pdf) {
     d.wo = readVector3(s->wo);
     d.weight = ValueAccess<Weight>::read(s->weight);
     d.pdf = static_cast<double>(s->pdf);
-    if constexpr (detail::HasDelta<typename Result::value_type>::value) d.delta = bool(s->delta);
+    d.delta = detail::sampledDelta(*s);
     return d;
-  };
-  m.eval = [eval](const Eigen::Vector3d& wi, const Eigen::Vector3d& wo) {
-    return ValueAccess<Value>::read(eval(makeVector3<V>(wi), makeVector3<V>(wo)));
-  };
-  m.pdf = [pdf](const Eigen::Vector3d& wi, const Eigen::Vector3d& wo) {
-    return static_cast<double>(pdf(makeVector3<V>(wi), makeVector3<V>(wo)));
   };
   return m;
 }
@@ -91,9 +116,18 @@ BsdfModel bsdfModel(SampleFn sample, EvalFn eval, PdfFn pdf) {
 struct BsdfCheckOptions : CheckOptions {
   bool checkReciprocity = true;
   DeltaCheckOptions delta;  // the delta lobes' directions and expectations (delta_check.h)
+
+  // Per-sample tolerances, relative and per component: float arithmetic in a renderer's
+  // BSDF may need more than the defaults, which suit double. Each in [0, 1), else checkBsdf
+  // throws std::invalid_argument naming it. The report gives the worst |ratio − 1| of each
+  // comparison that failed, beside its first example.
+  double weightTolerance = kWeightTolerance;            // weight and sample pdf
+  double reciprocityTolerance = kReciprocityTolerance;  // eval(wi,wo) against eval(wo,wi)
 };
 
-// One incident direction wi (local frame, normalised here).
+// One incident direction wi (local frame, normalised here). A model of components 0 (values
+// sized at run time) is given the size of eval at wi's mirror direction, and every other
+// value is held to it.
 CheckResult checkBsdf(const BsdfModel& model, const Eigen::Vector3d& wi,
                       const BsdfCheckOptions& options);
 

@@ -13,7 +13,9 @@
 //   counted and left out of the histogram, so ∫pdf must equal the probability of a valid
 //   non-delta sample. A sample() that fails (below the horizon, total internal reflection)
 //   returns nothing; it weighs zero and likewise lowers the expected ∫pdf.
-// - Values are RGB: a scalar BSDF repeats its one value (components = 1, printed as one).
+// - Values (eval, evalAdjoint, a sample's weight) have `components` entries each: 1 for a grey
+//   BSDF, 3 for RGB, as many as wavelengths for a spectral one. Every per-sample check works
+//   component by component; a value of another size is a defect ("value of the wrong size").
 // - Reciprocity (Veach 1997, §5.3.2): eval(wi, wo)·η(wo)² = eval(wo, wi)·η(wi)², η(w) being
 //   the index of refraction on w's side (exteriorIndex above the surface, interiorIndex
 //   below), i.e. radiance is scaled by 1/η² across a refraction as in pbrt. Where given,
@@ -30,7 +32,7 @@ namespace verity::chi2 {
 
 struct DirectionSample {
   Eigen::Vector3d wo = Eigen::Vector3d::UnitZ();
-  Eigen::Array3d weight = Eigen::Array3d::Zero();
+  Eigen::ArrayXd weight;
   double pdf = 0;
   bool delta = false;
 };
@@ -39,14 +41,16 @@ struct BsdfModel {
   using SampleFn =
       std::function<std::optional<DirectionSample>(const Eigen::Vector3d& wi, const BsdfUniforms&)>;
   using EvalFn =
-      std::function<Eigen::Array3d(const Eigen::Vector3d& wi, const Eigen::Vector3d& wo)>;
+      std::function<Eigen::ArrayXd(const Eigen::Vector3d& wi, const Eigen::Vector3d& wo)>;
   using PdfFn = std::function<double(const Eigen::Vector3d& wi, const Eigen::Vector3d& wo)>;
 
   SampleFn sample;
   EvalFn eval;
   PdfFn pdf;
   EvalFn evalAdjoint;  // optional
-  int components = 3;  // 1 for a scalar BSDF
+  // Entries in every value; 0 where only run time tells (a std::vector, an Eigen::VectorXd):
+  // checkBsdf then takes the size of eval at wi's mirror direction.
+  int components = 3;
   double exteriorIndex = 1, interiorIndex = 1;
 
   // The relative index across the surface; transmission peaks and cut-offs are sought only

@@ -1,5 +1,5 @@
 // A BsdfModel's sample() tested against its pdf() on the sphere of directions, with the
-// per-sample checks: weight = eval·|cos θo|/pdf and sample pdf = pdf() to kWeightTolerance
+// per-sample checks: weight = eval·|cos θo|/pdf and sample pdf = pdf() to the weight tolerance
 // relative, unit and finite sampled directions, no NaN/Inf/negative values, and
 // reciprocity (bsdf_model.h). eval is also checked at every cell centre, so that a NaN
 // where sample() never goes is found as well.
@@ -30,6 +30,8 @@ struct BsdfTestSetup {
   ShadingFrame frame;
   int resolution = 32;  // cells in cos θ; twice as many in φ
   bool checkReciprocity = true;
+  // Relative, per component (BsdfCheckOptions).
+  double weightTolerance = kWeightTolerance, reciprocityTolerance = kReciprocityTolerance;
 };
 
 class BsdfModelSubject : public Subject {
@@ -50,8 +52,14 @@ class BsdfModelSubject : public Subject {
 
  private:
   // f: eval(wi, wo), already computed by sample().
-  void checkReciprocity(const Vector3d& wo, const Eigen::Array3d& f, Audit& audit) const;
-  std::string format(const Eigen::Array3d& value) const;
+  void checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd& f, Audit& audit) const;
+  // Whether v has the model's number of components; records the defect where not, at
+  // where() (formatted only then).
+  template <class Where>
+  bool sized(const Eigen::ArrayXd& v, const char* what, Where where, Audit& audit) const;
+  std::string format(const Eigen::ArrayXd& value) const;
+  // "component c " where the BSDF has several, for an example.
+  std::string component(int c) const;
   double indexOn(const Vector3d& w) const {
     return w.z() > 0 ? model_.exteriorIndex : model_.interiorIndex;
   }

@@ -34,8 +34,9 @@ const char* deltaLobeName(DeltaLobe lobe);  // "reflection", "refraction", "pass
 
 // What the caller knows of one lobe, e.g. the Fresnel reflectance at wi for both.
 struct DeltaExpectation {
-  std::optional<double> share;           // the probability that a draw samples this lobe
-  std::optional<Eigen::Array3d> albedo;  // E[weight · 1[this lobe]] (repeat a scalar)
+  std::optional<double> share;  // the probability that a draw samples this lobe
+  // E[weight · 1[this lobe]]: one value per component, or one for all of them.
+  std::optional<Eigen::ArrayXd> albedo;
 };
 
 struct DeltaCheckOptions {
@@ -55,8 +56,7 @@ struct DeltaCheckOptions {
 struct DeltaLobeResult {
   long long count = 0;
   double share = 0, shareLower = 0, shareUpper = 1;  // Clopper–Pearson interval
-  Eigen::Array3d albedo = Eigen::Array3d::Zero();
-  Eigen::Array3d albedoHalfWidth = Eigen::Array3d::Zero();  // t interval, before the tolerance
+  Eigen::ArrayXd albedo, albedoHalfWidth;            // per component; the t interval's half width
   DeltaExpectation expected;
   bool sharePassed = true, albedoPassed = true;
 };
@@ -65,7 +65,7 @@ struct DeltaCheck {
   long long samples = 0;  // draws, delta or not
   long long deltaSamples = 0;
   double significance = 0;
-  int components = 3;
+  int components = 0;  // of the weights (the first delta sample's; others must match)
   std::optional<double> eta;
   double directionTolerance = 0;
   std::array<DeltaLobeResult, static_cast<int>(DeltaLobe::Count)> lobes{};

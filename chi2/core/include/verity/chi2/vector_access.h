@@ -2,12 +2,13 @@
 // callables written in them rather than in Verity's. A 2- or 3-vector is read through
 // `.x()` methods (Eigen), `.x/.y/.z` members, or `[i]`, in that order of preference, and is
 // made by default construction followed by assignment through the same accessor. A value
-// (what eval() returns, a sample's weight) is a scalar or three components: those of a
-// vector, or `.r/.g/.b` members. A type that none of these fit gets a specialisation of
-// VectorAccess<T>. Header-only and C++17, for renderers that are not on C++20.
+// (what eval() returns, a sample's weight) has any number of components (ValueAccess below).
+// A type that none of these fit gets a specialisation of VectorAccess<T>. Header-only and C++17,
+// for renderers that are not on C++20.
 #pragma once
 
 #include <Eigen/Core>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -117,15 +118,74 @@ T makeVector3(const Eigen::Vector3d& p) {
   return v;
 }
 
-// A value that is a scalar (a grey BSDF: one component, repeated) or three components.
+namespace detail {
+
+// The number of components a value type declares at compile time, or 0.
+template <class T, class = void>
+struct DeclaredSize : std::integral_constant<int, 0> {};
+// std::array and any type the caller gave a std::tuple_size (Eigen's own size below, should
+// a version of Eigen give its vectors one too).
+template <class T>
+struct DeclaredSize<T, std::void_t<decltype(std::tuple_size<T>::value),
+                                   std::enable_if_t<!std::is_base_of_v<Eigen::EigenBase<T>, T>>>>
+    : std::integral_constant<int, int(std::tuple_size<T>::value)> {};
+// Eigen's fixed-size vectors and arrays (a dynamic one declares -1: read at run time).
+template <class T>
+struct DeclaredSize<T, std::enable_if_t<std::is_base_of_v<Eigen::EigenBase<T>, T>>>
+    : std::integral_constant<
+          int, T::SizeAtCompileTime == Eigen::Dynamic ? 0 : int(T::SizeAtCompileTime)> {};
+
+template <class T, class = void>
+struct HasSize : std::false_type {};
+template <class T>
+struct HasSize<T, std::void_t<decltype(std::declval<const T&>().size())>> : std::true_type {};
+
+}  // namespace detail
+
+// The number of components of a value type, when its type says so: a specialisation for a
+// spectrum type that has operator[] and a size the compiler cannot see, e.g.
+//   template <> struct verity::chi2::ValueSize<pbrt::SampledSpectrum>
+//       : std::integral_constant<int, pbrt::NSpectrumSamples> {};
+template <class T>
+struct ValueSize : detail::DeclaredSize<T> {};
+
+// A value (what eval() returns, a sample's weight) with any number of components, read into
+// an Eigen::ArrayXd in this order of preference:
+//   a scalar                           one component (a grey BSDF)
+//   a size known at compile time       ValueSize<T> components through [i]: std::array,
+//                                      Eigen's fixed vectors, a specialised ValueSize
+//   .x/.y/.z or .r/.g/.b               three components (an RGB colour)
+//   a run-time size() and [i]          std::vector, Eigen::VectorXd: kComponents is 0, and
+//                                      checkBsdf holds every value to the size of eval at
+//                                      wi's mirror direction
+// A spectral value (several wavelengths) is one of the first two.
 template <class T>
 struct ValueAccess {
-  static constexpr int kComponents = std::is_arithmetic_v<T> ? 1 : 3;
-  static Eigen::Array3d read(const T& v) {
-    if constexpr (std::is_arithmetic_v<T>)
-      return Eigen::Array3d::Constant(static_cast<double>(v));
-    else
+  static constexpr int kComponents =
+      std::is_arithmetic_v<T>   ? 1
+      : ValueSize<T>::value > 0 ? ValueSize<T>::value
+      // An Eigen::VectorXd has .x() too, and any size.
+      : std::is_base_of_v<Eigen::EigenBase<T>, T> ? 0
+      : detail::HasXMethod<T>::value || detail::HasXMember<T>::value || detail::HasRMember<T>::value
+          ? 3
+          : 0;
+  static Eigen::ArrayXd read(const T& v) {
+    if constexpr (std::is_arithmetic_v<T>) {
+      return Eigen::ArrayXd::Constant(1, static_cast<double>(v));
+    } else if constexpr (kComponents == 3 && ValueSize<T>::value == 0) {
       return readVector3(v).array();
+    } else if constexpr (kComponents > 0) {
+      Eigen::ArrayXd out(kComponents);
+      for (int i = 0; i < kComponents; ++i) out[i] = static_cast<double>(v[i]);
+      return out;
+    } else {
+      static_assert(detail::HasSize<T>::value && detail::HasIndex<T>::value,
+                    "a value is a scalar, has a size and [i], or .x/.y/.z or .r/.g/.b: "
+                    "specialise verity::chi2::ValueSize or verity::chi2::ValueAccess");
+      Eigen::ArrayXd out(static_cast<Eigen::Index>(v.size()));
+      for (Eigen::Index i = 0; i < out.size(); ++i) out[i] = static_cast<double>(v[i]);
+      return out;
+    }
   }
 };
 

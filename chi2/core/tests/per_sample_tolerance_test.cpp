@@ -1,0 +1,167 @@
+// The per-sample tolerances a caller sets (BsdfCheckOptions::weightTolerance and
+// reciprocityTolerance) and the worst |ratio − 1| the report gives beside each defect's first
+// example: a Lambertian lobe whose weight, sample pdf or eval carries a relative error of a
+// few 10⁻⁴ (float rounding) fails at the defaults with that worst, passes with a tolerance
+// set to 10⁻³ or 10⁻², and reads apart from a bug (a worst of 0.5).
+//
+// Level: kCorrectChecks checks of two statistical tests each must pass, at a family-wise level
+// of 1% with Šidák's correction; those that must fail use the same level.
+#include <gtest/gtest.h>
+#include <verity/chi2/bsdf_adapter.h>
+#include <verity/chi2/significance.h>
+
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+#include "lambert_toy.h"
+
+namespace verity::chi2 {
+
+namespace {
+
+using lambert_toy::Vec3;
+
+// The weight, the sample pdf and the eval errors, each with its tolerance raised.
+constexpr int kCorrectChecks = 3;
+const double kLevel = sidakLevel(0.01, kStatisticalTestsPerCheck* kCorrectChecks);
+constexpr long long kSamples = 100'000;
+constexpr double kAlbedo = 0.6;
+
+enum class Error {
+  Weight,       // weight × (1 + size·(2·u.lobe − 1)): |ratio − 1| up to size
+  HalfWeights,  // weight × (1 + size) for u.lobe < 1/2: a bug, |ratio − 1| = size
+  SamplePdf,    // sample pdf × (1 + size·(2·u.lobe − 1))
+  Eval,         // eval × (1 + size·wo.x), the weight kept consistent: not reciprocal
+};
+
+// A cosine-sampled Lambertian lobe in Verity's convention, with one error of relative `size`.
+BsdfModel lambert(Error error, double size) {
+  auto eval = [error, size](const Vec3& wi, const Vec3& wo) {
+    if (wi.z <= 0 || wo.z <= 0) return 0.0;
+    return kAlbedo / std::numbers::pi * (error == Error::Eval ? 1 + size * wo.x : 1);
+  };
+  return bsdfModel<Vec3>(
+      [=](const Vec3& wi, const BsdfUniforms& u) -> std::optional<SampledDirection<Vec3, double>> {
+        if (wi.z <= 0) return std::nullopt;
+        const Vec3 wo = lambert_toy::cosineHemisphere(u.xy.x, u.xy.y);
+        const double jitter = 1 + size * (2 * u.lobe - 1), pdf = lambert_toy::cosinePdf(wo);
+        double weight = eval(wi, wo) * wo.z / pdf;
+        if (error == Error::Weight) weight *= jitter;
+        if (error == Error::HalfWeights && u.lobe < 0.5) weight *= 1 + size;
+        return SampledDirection<Vec3, double>{wo, weight,
+                                              error == Error::SamplePdf ? pdf * jitter : pdf};
+      },
+      eval, [](const Vec3&, const Vec3& wo) { return lambert_toy::cosinePdf(wo); });
+}
+
+CheckResult check(Error error, double size, const std::string& name,
+                  const BsdfCheckOptions& tolerances = {}) {
+  BsdfCheckOptions o = tolerances;
+  o.name = "tolerance lambert " + name;
+  o.significance = kLevel;
+  o.samples = kSamples;
+  const double t = 40 * std::numbers::pi / 180;
+  return checkBsdf(lambert(error, size), Vec3{std::sin(t), 0, std::cos(t)}, o);
+}
+
+BsdfCheckOptions weightTolerance(double t) {
+  BsdfCheckOptions o;
+  o.weightTolerance = t;
+  return o;
+}
+
+std::string failed(const CheckResult& r) {
+  std::string s;
+  for (const std::string& f : r.failures()) s += "[" + f + "] ";
+  return s + "\n" + r.report();
+}
+
+}  // namespace
+
+TEST(PerSampleTolerance, DefaultsAreThoseOfTheSuite) {
+  const BsdfCheckOptions o;
+  EXPECT_EQ(o.weightTolerance, 1e-4);
+  EXPECT_EQ(o.reciprocityTolerance, 1e-3);
+}
+
+TEST(PerSampleTolerance, InvalidTolerancesAreRejectedNamingTheOption) {
+  const BsdfModel m = lambert(Error::Weight, 0);
+  for (const char* option : {"weightTolerance", "reciprocityTolerance"}) {
+    for (double bad : {-1e-4, 1.0, std::numeric_limits<double>::infinity(), std::nan("")}) {
+      BsdfCheckOptions o;
+      o.name = "tolerance invalid";
+      o.significance = kLevel;
+      (std::string(option) == "weightTolerance" ? o.weightTolerance : o.reciprocityTolerance) = bad;
+      try {
+        checkBsdf(m, Vec3{0, 0, 1}, o);
+        ADD_FAILURE() << option << " = " << bad << " was accepted";
+      } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find(option), std::string::npos) << e.what();
+      }
+    }
+  }
+}
+
+TEST(PerSampleTolerance, FloatRoundingInTheWeightReadsApartFromABug) {
+  const CheckResult rounding = check(Error::Weight, 3e-4, "weight 3e-4");
+  EXPECT_EQ(rounding.failures(), std::vector<std::string>{"weight != eval*cos/pdf"})
+      << failed(rounding);
+  const double worst = rounding.test.audit.worst(Defect::Weight);
+  std::cout << rounding.report() << "\n";
+  EXPECT_GT(worst, 2.9e-4) << failed(rounding);
+  EXPECT_LE(worst, 3e-4 * (1 + 1e-9)) << failed(rounding);
+  EXPECT_NE(rounding.report().find("worst |ratio - 1| = 0.0003"), std::string::npos)
+      << failed(rounding);
+
+  const CheckResult tolerated =
+      check(Error::Weight, 3e-4, "weight 3e-4 at 1e-3", weightTolerance(1e-3));
+  EXPECT_TRUE(tolerated.passed()) << failed(tolerated);
+
+  const CheckResult bug = check(Error::HalfWeights, 0.5, "weight bug", weightTolerance(1e-3));
+  EXPECT_NEAR(bug.test.audit.worst(Defect::Weight), 0.5, 1e-9) << failed(bug);
+  EXPECT_NE(bug.report().find("worst |ratio - 1| = 0.5:"), std::string::npos) << failed(bug);
+}
+
+TEST(PerSampleTolerance, FloatRoundingInTheSamplePdfIsTolerated) {
+  const CheckResult rounding = check(Error::SamplePdf, 3e-4, "sample pdf 3e-4");
+  EXPECT_TRUE(rounding.failed("sample pdf != pdf()")) << failed(rounding);
+  EXPECT_GT(rounding.test.audit.worst(Defect::SamplePdf), 2.9e-4) << failed(rounding);
+  EXPECT_LE(rounding.test.audit.worst(Defect::SamplePdf), 3e-4 * (1 + 1e-9)) << failed(rounding);
+  const CheckResult tolerated =
+      check(Error::SamplePdf, 3e-4, "sample pdf 3e-4 at 1e-3", weightTolerance(1e-3));
+  EXPECT_TRUE(tolerated.passed()) << failed(tolerated);
+}
+
+// eval(wi, wo)/eval(wo, wi) = (1 + δ·wo.x)/(1 + δ·wi.x), |· − 1| up to about 1.64·δ at 40°.
+TEST(PerSampleTolerance, FloatRoundingInReciprocityIsTolerated) {
+  const CheckResult rounding = check(Error::Eval, 2e-3, "eval 2e-3");
+  EXPECT_EQ(rounding.failures(), std::vector<std::string>{"reciprocity"}) << failed(rounding);
+  EXPECT_GT(rounding.test.audit.worst(Defect::Reciprocity), 3e-3) << failed(rounding);
+  EXPECT_LT(rounding.test.audit.worst(Defect::Reciprocity), 3.3e-3) << failed(rounding);
+  BsdfCheckOptions o;
+  o.reciprocityTolerance = 1e-2;
+  const CheckResult tolerated = check(Error::Eval, 2e-3, "eval 2e-3 at 1e-2", o);
+  EXPECT_TRUE(tolerated.passed()) << failed(tolerated);
+}
+
+// Merged chunk by chunk, the audit keeps the first example and the largest deviation.
+TEST(PerSampleTolerance, TheAuditKeepsTheWorstDeviationAcrossMerges) {
+  Audit a, b, c;
+  a.record(Defect::Weight, 0.1, "first");
+  b.record(Defect::Weight, 0.5, "worst");
+  c.record(Defect::Weight, 0.2, "later");
+  a.merge(b);
+  a.merge(c);
+  EXPECT_EQ(a.count(Defect::Weight), 3);
+  EXPECT_EQ(a.worst(Defect::Weight), 0.5);
+  EXPECT_EQ(a.worstExample(Defect::Weight), "worst");
+  EXPECT_NE(a.describe().find("first: first"), std::string::npos) << a.describe();
+  EXPECT_NE(a.describe().find("worst |ratio - 1| = 0.5: worst"), std::string::npos) << a.describe();
+  EXPECT_EQ(ratioDeviation(0, 0), 0);
+  EXPECT_EQ(ratioDeviation(1, 0), std::numeric_limits<double>::infinity());
+}
+
+}  // namespace verity::chi2
