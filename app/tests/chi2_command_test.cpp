@@ -114,6 +114,21 @@ TEST(Chi2Command, DetectChoosesTheSamplesAndABudgetTooSmallIsInconclusive) {
   EXPECT_EQ(budget.stdoutText.find("PASSED"), std::string::npos) << budget.stdoutText;
 }
 
+// Smooth glass and a mirror have only delta lobes: the command checks them on draws of their
+// own (directions for the material's own index, shares and albedos) rather than ending
+// INCONCLUSIVE with nothing checked.
+TEST(Chi2Command, DeltaLobesAreChecked) {
+  for (const char* material :
+       {R"({"type":"dielectric","ior":1.5})", R"({"type":"metal","roughness":0})"}) {
+    const Printed r = printed({"--material", material, "--incoming", "30", "--samples", "100000"});
+    EXPECT_EQ(r.status, 0) << material << "\n" << r.stdoutText << r.stderrText;
+    EXPECT_NE(r.stdoutText.find("PASSED with the delta lobes"), std::string::npos) << r.stdoutText;
+  }
+  const Printed glass =
+      printed({"--material", R"({"type":"dielectric","ior":1.5})", "--samples", "100000"});
+  EXPECT_NE(glass.stdoutText.find("refraction for eta 1.5"), std::string::npos) << glass.stdoutText;
+}
+
 // An inconclusive run shows no statistic of a test that did not run.
 TEST(Chi2Command, AnInconclusiveRunPrintsNoStatisticOfATestThatDidNotRun) {
   const Printed r = printed({"--material", R"({"type":"lambertian"})", "--samples", "8"});

@@ -49,6 +49,10 @@ class BsdfModelSubject : public Subject {
   std::string describe() const override;
 
   long long deltaSamples() const override { return delta_.load(); }
+  // The model and its incident direction in the local frame, for checks of its own
+  // (delta_check.h) on the same BSDF.
+  const BsdfModel& model() const { return model_; }
+  const Vector3d& localWi() const { return setup_.wi; }
 
  private:
   // f: eval(wi, wo), already computed by sample().
