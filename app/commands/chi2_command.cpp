@@ -42,6 +42,7 @@ struct Chi2Args {
   uint64_t seed = 1;
   std::string output;
   bool seedTable = false;
+  std::string cells = "equal";  // chi2::parseCellLayout
 };
 
 Vector3f parseVector(const std::string& text) {
@@ -82,6 +83,7 @@ int runOne(const Chi2Args& a) {
   o.samples = a.samples;
   o.seed = a.seed;
   o.significance = chi2::perTestSignificance();
+  o.cells = chi2::parseCellLayout(a.cells);
   const chi2::TestResult r = chi2::runSamplingTest(subject, o);
   printResult(r);
   if (subject.deltaSamples() > 0)
@@ -131,6 +133,7 @@ int seedTable(const Chi2Args& a) {
       o.samples = a.samples;
       o.seed = chi2::seedFromName(std::string("seed_table_") + row.name + sampling);
       o.significance = chi2::perTestSignificance();
+      o.cells = chi2::parseCellLayout(a.cells);
       const chi2::TestResult r = chi2::runSamplingTest(subject, o);
       failures += !r.passed();
       std::cout << fmt::format(
@@ -171,6 +174,12 @@ void addChi2Command(CLI::App& app, const ProcessGroup& group) {
                   "/usr/bin/python3, or $VERITY_PYTHON), and its data "
                   "PREFIX.json; missing folders are created")
       ->type_name("PREFIX");
+  cmd->add_option("--cells", args->cells,
+                  "the histogram's cells: 'equal', of equal probability under the claimed pdf "
+                  "(a narrow lobe keeps as many cells as a diffuse one), or 'grid', the uniform "
+                  "grid of (phi, cos theta)")
+      ->check(CLI::IsMember({"equal", "grid"}))
+      ->default_str("equal");
   cmd->add_flag("--seed-table", args->seedTable, "print the seed report's table next to ours");
   cmd->callback([args] {
     if (!args->seedTable && args->material.empty())

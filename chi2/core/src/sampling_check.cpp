@@ -23,7 +23,6 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   TestResult r;
   r.subject = subject.describe();
-  r.domain = subject.domain();
   if (!(options.significance > 0 && options.significance < 1))
     throw std::invalid_argument(fmt::format(
         "the per-test significance level must be in (0, 1), not {}", options.significance));
@@ -32,6 +31,25 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
         fmt::format("the number of samples must be at least 1, not {}", options.samples));
   r.significance = options.significance;
   r.samples = options.samples;
+  // The density, guarded: non-finite or negative values are defects, and are replaced by
+  // zero so that the quadrature still terminates.
+  std::atomic<long long> badPdf{0}, negativePdf{0};
+  std::mutex exampleMutex;
+  std::string badExample;
+  DensityFn pdf = [&](double x, double y) {
+    const double v = subject.pdf(x, y);
+    if (std::isfinite(v) && v >= 0) return v;
+    (std::isfinite(v) ? negativePdf : badPdf)++;
+    std::lock_guard lock(exampleMutex);
+    if (badExample.empty())
+      badExample = fmt::format("pdf() = {} at domain point ({}, {})", v, x, y);
+    return 0.0;
+  };
+  const DensityFeatures features{[&](double x) { return subject.breakpointsY(x); },
+                                 subject.breakpointsX(), subject.peaks()};
+  // The cells, cut from the subject's domain before sampling: equal-probability cells
+  // follow the claimed pdf (partition.h).
+  r.domain = cellsFor(subject.domain(), options.cells, pdf, features, options.quadrature);
   const Domain& d = r.domain;
   const int cells = d.cells();
 
@@ -66,22 +84,6 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
     r.outside += outsidePerChunk[c];
   }
 
-  // The density, guarded: non-finite or negative values are defects, and are replaced by
-  // zero so that the quadrature still terminates.
-  std::atomic<long long> badPdf{0}, negativePdf{0};
-  std::mutex exampleMutex;
-  std::string badExample;
-  DensityFn pdf = [&](double x, double y) {
-    const double v = subject.pdf(x, y);
-    if (std::isfinite(v) && v >= 0) return v;
-    (std::isfinite(v) ? negativePdf : badPdf)++;
-    std::lock_guard lock(exampleMutex);
-    if (badExample.empty())
-      badExample = fmt::format("pdf() = {} at domain point ({}, {})", v, x, y);
-    return 0.0;
-  };
-  const DensityFeatures features{[&](double x) { return subject.breakpointsY(x); },
-                                 subject.breakpointsX(), subject.peaks()};
   const std::vector<CellIntegral> integrals = integrateGrid(pdf, d, options.quadrature, features);
   r.probability.resize(cells);
   double total = 0;

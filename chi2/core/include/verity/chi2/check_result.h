@@ -27,6 +27,8 @@ struct CheckOptions {
   // Cells in cos θ on the sphere (twice as many in φ) or along each side of a planar
   // domain; 0: 32 on the sphere and 40 on a plane, as in Verity's suite.
   int resolution = 0;
+  // Cells of equal probability under the claimed pdf, or the uniform grid (partition.h).
+  CellLayout cells = CellLayout::EqualProbability;
 };
 
 struct CheckResult {

@@ -6,6 +6,7 @@
 #include <verity/chi2/audit.h>
 #include <verity/chi2/chi_square.h>
 #include <verity/chi2/integral_check.h>
+#include <verity/chi2/partition.h>
 #include <verity/chi2/quadrature.h>
 #include <verity/chi2/subject.h>
 
@@ -23,6 +24,8 @@ struct TestOptions {
   double significance = 0;
   QuadratureOptions quadrature;
   double integralTolerance = kIntegralTolerance;
+  // The cells the samples are histogrammed in, cut from the subject's domain (partition.h).
+  CellLayout cells = CellLayout::EqualProbability;
 };
 
 // What a sampling test concluded. PASSED only when every check ran with the power it
@@ -34,7 +37,7 @@ std::string verdictName(Verdict verdict);  // "PASSED", "FAILED", "INCONCLUSIVE"
 
 struct TestResult {
   std::string subject;
-  Domain domain;
+  Domain domain;  // the cells histogrammed in (TestOptions::cells of the subject's domain)
   double significance = 0;
   long long samples = 0, valid = 0;
   long long outside = 0;            // valid samples outside the domain's support: outright failures
