@@ -42,7 +42,7 @@ struct Chi2Args {
   uint64_t seed = 1;
   std::string output;
   bool seedTable = false;
-  std::string cells = "equal";  // chi2::parseCellLayout
+  std::string cells = "grid";  // chi2::parseCellLayout
 };
 
 Vector3f parseVector(const std::string& text) {
@@ -175,11 +175,11 @@ void addChi2Command(CLI::App& app, const ProcessGroup& group) {
                   "PREFIX.json; missing folders are created")
       ->type_name("PREFIX");
   cmd->add_option("--cells", args->cells,
-                  "the histogram's cells: 'equal', of equal probability under the claimed pdf "
-                  "(a narrow lobe keeps as many cells as a diffuse one), or 'grid', the uniform "
-                  "grid of (phi, cos theta)")
+                  "the histogram's cells: 'grid', the uniform grid of (phi, cos theta), or "
+                  "'equal', of equal probability under the claimed pdf (a narrow lobe keeps as "
+                  "many cells as a diffuse one; slower)")
       ->check(CLI::IsMember({"equal", "grid"}))
-      ->default_str("equal");
+      ->default_str("grid");
   cmd->add_flag("--seed-table", args->seedTable, "print the seed report's table next to ours");
   cmd->callback([args] {
     if (!args->seedTable && args->material.empty())

@@ -225,18 +225,20 @@ CellIntegral integrateRectangle(const DensityFn& f, const DensityFeatures& featu
                                 const Domain& d, const CellBounds& b,
                                 const QuadratureOptions& options) {
   const double w = b.x1 - b.x0, h = b.y1 - b.y0;
-  // The peaks that matter here: inside the rectangle or within half its longer side of it,
-  // whose tail would otherwise sit at an end of an interval as a spike. The longer side: a
-  // strip far thinner than the lobe (equal-probability cells, partition.h) still needs the
-  // lobe's narrow profile along its length graded (measured: a Gaussian of σ = 10⁻³ in a
-  // strip 5·10⁻⁴ wide, 0.6σ from its centre, integrated to 10⁻²⁶ instead of 0.16).
-  const double margin = std::max(w, h) / 2;
+  // The peaks that matter here: inside the rectangle or within half its size of it, whose
+  // tail would otherwise sit at an end of an interval as a spike. A strip far longer than
+  // wide (equal-probability cells, partition.h) reaches an eighth of its length across: a
+  // lobe wider than the strip still needs its narrow profile along it graded (measured: a
+  // Gaussian of σ = 10⁻³, 0.6σ beside a strip 5·10⁻⁴ wide, integrated to 10⁻²⁶ for 0.16).
+  // A grid cell (sides within a factor 4) keeps half its size.
+  const double marginX = std::max(w, h / 4) / 2, marginY = std::max(h, w / 4) / 2;
   std::vector<Point2d> near;
   const bool sphere = d.kind == DomainKind::Sphere;
   for (const Point2d& p : features.peaks)
-    if (!(sphere && std::fabs(p.y()) > 1 - h) &&  // φ means nothing at a pole: graded there
-        p.x() > b.x0 - margin && p.x() < b.x1 + margin && p.y() > b.y0 - margin &&
-        p.y() < b.y1 + margin)
+    // φ means nothing at a pole: a peak within a cell of it is graded there (the grid's
+    // cell height for a rectangle taller than a cell: a strip of the inversion).
+    if (!(sphere && std::fabs(p.y()) > 1 - std::min(h, d.cellHeight())) && p.x() > b.x0 - marginX &&
+        p.x() < b.x1 + marginX && p.y() > b.y0 - marginY && p.y() < b.y1 + marginY)
       near.push_back(p);
   return nested(f, features.breaksY, features.breaksX, near, &d, b.x0, b.x1, b.y0, b.y1, options);
 }

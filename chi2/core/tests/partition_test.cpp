@@ -102,7 +102,9 @@ TEST(FrameworkPartition, PhongLobeOnTheSphereKeepsItsCellsAndAZeroHemisphere) {
     EXPECT_EQ(p[i], 0.0) << "strip " << i;
     double mass = 0;
     for (int j = 0; j < d.ny; ++j) mass += p[j * d.nx + i];
-    if (mass > 0) EXPECT_GE(d.yEdge(i, 1), 0.0) << "strip " << i;
+    if (mass > 0) {
+      EXPECT_GE(d.yEdge(i, 1), 0.0) << "strip " << i;
+    }
   }
 }
 

@@ -45,7 +45,7 @@ class SquareSubject : public Subject {
 };
 
 TestResult run(const Subject& subject, long long samples = 100'000,
-               CellLayout cells = CellLayout::EqualProbability) {
+               CellLayout cells = CellLayout::Grid) {
   TestOptions o;
   o.cells = cells;
   o.samples = samples;

@@ -27,8 +27,9 @@ struct CheckOptions {
   // Cells in cos θ on the sphere (twice as many in φ) or along each side of a planar
   // domain; 0: 32 on the sphere and 40 on a plane, as in Verity's suite.
   int resolution = 0;
-  // Cells of equal probability under the claimed pdf, or the uniform grid (partition.h).
-  CellLayout cells = CellLayout::EqualProbability;
+  // The uniform grid, or cells of equal probability under the claimed pdf (partition.h):
+  // more power on narrow lobes, at more quadrature (TestOptions::cells).
+  CellLayout cells = CellLayout::Grid;
 };
 
 struct CheckResult {

@@ -15,11 +15,15 @@
 namespace verity::chi2 {
 
 enum class CellLayout {
-  // Cells holding about 1/(nx·ny) of the claimed pdf's mass each.
+  // Cells holding about 1/(nx·ny) of the claimed pdf's mass each: a narrow lobe keeps as many
+  // cells, and degrees of freedom, as a diffuse one.
   EqualProbability,
-  // The uniform grid of the domain. It earns its place where the cells must not depend on the
-  // claimed pdf: comparing two pdfs' histograms cell by cell, or reading a figure by fixed
-  // coordinates; and it is what tests written before equal-probability cells measured.
+  // The uniform grid of the domain: the default, as it is much cheaper to integrate. Every
+  // equal-probability cell of a narrow lobe lies where a density evaluated in single
+  // precision is a staircase (Phong with exponent 10⁴: steps of 6·10⁻⁴), which the per-cell
+  // quadrature refines to its limits, where the grid meets it in four cells (measured: 0.15 s
+  // against 8-10 s for the cells' integrals). It also keeps the cells independent of the
+  // claimed pdf, for comparing histograms cell by cell or reading a figure by coordinates.
   Grid,
 };
 
