@@ -70,6 +70,8 @@ TEST_F(BadInput, EveryCommandExitsWithTwoAndNamesWhatItIsAbout) {
       {{"compare", missingExr, missingExr}, missingExr},
       {{"chi2", "--material", R"({"type":"nope"})"}, "nope"},
       {{"chi2", "--incoming", "10"}, "--material"},
+      {{"chi2", "--material", R"({"type":"ggx"})", "--cells", "fine"},
+       "--cells: fine not in {equal,grid}"},
   };
   for (const Case& c : cases) {
     std::string command;
