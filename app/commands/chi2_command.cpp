@@ -1,13 +1,15 @@
 #include "commands/chi2_command.h"
 
 #include <fmt/format.h>
+#include <verity/chi2/check_result.h>
+#include <verity/chi2/significance.h>
 
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "chi2/suite/figure.h"
 #include "chi2/suite/suite.h"
-#include "chi2/suite/suite_significance.h"
 #include "cli/exit_status.h"
 #include "cli/number_options.h"
 #include "cli/output_paths.h"
@@ -39,6 +41,11 @@ struct Chi2Args {
   std::string normal = "0,0,1";
   bool inside = false;
   long long samples = chi2::suite::kSamples;
+  double alpha = 0.01;
+  double power = chi2::kDefaultPower;
+  std::optional<double> detect;
+  double mass = chi2::kStatedMass;
+  long long maxSamples = 100'000'000;
   uint64_t seed = 1;
   std::string output;
   bool seedTable = false;
@@ -54,12 +61,30 @@ Vector3f parseVector(const std::string& text) {
   return v.normalized();
 }
 
-void printResult(const chi2::TestResult& r) {
+// The run's options as the library's: --alpha is the probability that a correct material
+// fails this run, shared by its statistical tests with Šidák's correction.
+chi2::TestOptions testOptions(const Chi2Args& a) {
+  chi2::TestOptions o;
+  o.samples = a.samples;
+  o.seed = a.seed;
+  o.significance = chi2::sidakLevel(a.alpha, chi2::kStatisticalTestsPerCheck);
+  o.power = a.power;
+  if (!(a.power > o.significance))
+    throw std::invalid_argument(fmt::format(
+        "--power: must exceed the per-test level {:.3g}, or no test could reach it, not {}",
+        o.significance, a.power));
+  if (a.detect) o.detect = chi2::DetectionTarget{*a.detect, a.mass, a.power};
+  o.maxSamples = a.maxSamples;
+  o.cells = chi2::parseCellLayout(a.cells);
+  return o;
+}
+
+void printResult(const chi2::TestResult& r, const Chi2Args& a) {
   std::cout << r.report() << "\n";
   std::cout << fmt::format(
-      "  p-value {:.4g} against the per-test level {:.3g} (Sidak over {} "
-      "checks for a family-wise level of {})\n",
-      r.chiSquare.pValue, r.significance, chi2::declaredTestCount(), chi2::kFamilySignificance);
+      "  level {:.3g} per test: Sidak over this run's {} statistical tests for a family-wise "
+      "level of {} (--alpha)\n",
+      r.significance, chi2::kStatisticalTestsPerCheck, a.alpha);
 }
 
 // The material --material describes; its errors name the option and the JSON path in it.
@@ -79,13 +104,8 @@ int runOne(const Chi2Args& a) {
   s.wi = chi2::incidentDirection(a.incoming, a.inside);
   s.resolution = chi2::suite::kSphereResolution;
   chi2::BsdfSubject subject(s);
-  chi2::TestOptions o;
-  o.samples = a.samples;
-  o.seed = a.seed;
-  o.significance = chi2::perTestSignificance();
-  o.cells = chi2::parseCellLayout(a.cells);
-  const chi2::TestResult r = chi2::runSamplingTest(subject, o);
-  printResult(r);
+  const chi2::TestResult r = chi2::runSamplingTest(subject, testOptions(a));
+  printResult(r, a);
   if (subject.deltaSamples() > 0)
     std::cout << fmt::format("  {} delta-lobe samples (not histogrammed)\n",
                              subject.deltaSamples());
@@ -129,11 +149,8 @@ int seedTable(const Chi2Args& a) {
       s.wi = Vector3f(-0.25f, 0.0f, 1.0f).normalized();
       s.resolution = chi2::suite::kSphereResolution;
       chi2::BsdfSubject subject(s);
-      chi2::TestOptions o;
-      o.samples = a.samples;
+      chi2::TestOptions o = testOptions(a);
       o.seed = chi2::seedFromName(std::string("seed_table_") + row.name + sampling);
-      o.significance = chi2::perTestSignificance();
-      o.cells = chi2::parseCellLayout(a.cells);
       const chi2::TestResult r = chi2::runSamplingTest(subject, o);
       failures += !r.passed();
       std::cout << fmt::format(
@@ -162,11 +179,42 @@ void addChi2Command(CLI::App& app, const ProcessGroup& group) {
       ->check(realNumber(0, true, 90, true));
   cmd->add_option("--normal", args->normal, "shading normal x,y,z (world space)");
   cmd->add_flag("--inside", args->inside, "incident direction from below the surface");
-  cmd->add_option("--samples", args->samples,
-                  fmt::format("number of samples (the suite's sweep draws {} for a warp, {} for "
-                              "a BSDF)",
-                              chi2::suite::kSamples, chi2::suite::kBsdfSamples))
-      ->check(wholeNumber(1, LLONG_MAX));
+  CLI::Option* samples =
+      cmd->add_option("--samples", args->samples,
+                      fmt::format("number of samples (the suite's sweep draws {} for a warp, {} "
+                                  "for a BSDF)",
+                                  chi2::suite::kSamples, chi2::suite::kBsdfSamples))
+          ->check(wholeNumber(1, LLONG_MAX));
+  cmd->add_option("--alpha", args->alpha,
+                  "the probability that a correct material fails this run (its two statistical "
+                  "tests share it by Sidak's correction)")
+      ->check(realNumber(0, false, 1, false))
+      ->capture_default_str();
+  cmd->add_option("--power", args->power,
+                  "the probability at which the verdict states what it could have caught, and "
+                  "with which --detect must find its error")
+      ->check(realNumber(0, false, 1, false))
+      ->capture_default_str();
+  CLI::Option* detect =
+      cmd->add_option(
+             "--detect", args->detect,
+             "the relative density error to find (e.g. 0.01): over cells holding --mass of "
+             "the distribution the density is 1 + EPS times the claimed one, and 1 - EPS "
+             "over other cells holding --mass; the test draws the samples this needs, "
+             "instead of --samples")
+          ->type_name("EPS")
+          ->check(realNumber(0, false, 1, true))
+          ->excludes(samples);
+  cmd->add_option("--mass", args->mass, "the mass each side of the --detect error covers")
+      ->check(realNumber(0, false, 0.5, true))
+      ->needs(detect)
+      ->capture_default_str();
+  cmd->add_option("--max-samples", args->maxSamples,
+                  "the budget of --detect: a target that needs more samples is INCONCLUSIVE, "
+                  "never PASSED")
+      ->check(wholeNumber(1, LLONG_MAX))
+      ->needs(detect)
+      ->capture_default_str();
   addSeedOption(cmd, args->seed, "random seed, 0 to 2^64 - 1")->default_str("1");
   cmd->add_option("-o,--output", args->output,
                   "file name prefix: writes PREFIX.png, observed and expected counts and "

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <fstream>
 
 #include "cli/exit_status.h"
@@ -62,6 +64,17 @@ int run(const CompareArgs& args) {
   options.tileSize = args.tile;
   options.alpha = args.alpha;
   validation::checkComparisonOptions(options);
+  // Outputs are checked before any work, so that a verdict is never followed by an error.
+  if (!args.zImage.empty()) {
+    std::string extension = std::filesystem::path(args.zImage).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    if (extension != ".png")
+      throw VerityError("", "--z-image",
+                        "writes a PNG, so its name must end in .png, not \"" + args.zImage + "\"");
+  }
+  if (!args.json.empty()) prepareOutputFile(args.json, "-o");
+  if (!args.zImage.empty()) prepareOutputFile(args.zImage, "--z-image");
   const auto [filesA, filesB] = sideFiles(args);
   std::vector<std::filesystem::path> all = filesA;
   all.insert(all.end(), filesB.begin(), filesB.end());
@@ -70,8 +83,6 @@ int run(const CompareArgs& args) {
   const auto b = validation::loadSide(filesB, "B", args.layer);
   const validation::ComparisonResult result = validation::compareSides(*a, *b, options);
   fmt::print("{}", validation::comparisonSummary(result));
-  if (!args.json.empty()) prepareOutputFile(args.json, "-o");
-  if (!args.zImage.empty()) prepareOutputFile(args.zImage, "--z-image");
   if (!args.json.empty()) {
     std::ofstream out(args.json);
     out << validation::comparisonJson(result).dump(2) << "\n";

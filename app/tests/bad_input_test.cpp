@@ -41,6 +41,7 @@ TEST_F(BadInput, EveryCommandExitsWithTwoAndNamesWhatItIsAbout) {
   const std::string missingExr = (dir_ / "missing.exr").string();
   const std::string out = (dir_ / "out.exr").string();
   const std::string jsonl = (dir_ / "out.jsonl").string();
+  const std::string lambertian = R"({"type":"lambertian"})";
   struct Case {
     std::vector<std::string> args;
     std::string names;  // what the message must name
@@ -68,10 +69,18 @@ TEST_F(BadInput, EveryCommandExitsWithTwoAndNamesWhatItIsAbout) {
       {{"bench", scene_, "--rr-depth", "2"}, "--rr-depth: "},
       {{"error", missingExr, "--reference", missingExr}, missingExr},
       {{"compare", missingExr, missingExr}, missingExr},
+      // Outputs are refused before the images are read (and so before any verdict is printed).
+      {{"compare", missingExr, missingExr, "--z-image", (dir_ / "z.jpg").string()}, "--z-image: "},
+      {{"compare", missingExr, missingExr, "-o", scene_ + "/report.json"}, "-o: cannot create"},
       {{"chi2", "--material", R"({"type":"nope"})"}, "nope"},
       {{"chi2", "--incoming", "10"}, "--material"},
       {{"chi2", "--material", R"({"type":"ggx"})", "--cells", "fine"},
        "--cells: fine not in {equal,grid}"},
+      {{"chi2", "--material", lambertian, "--mass", "0.1"}, "--mass requires --detect"},
+      {{"chi2", "--material", lambertian, "--detect", "0.01", "--samples", "10"}, "--detect"},
+      {{"chi2", "--material", lambertian, "--detect", "0"}, "--detect: "},
+      {{"chi2", "--material", lambertian, "--alpha", "1"}, "--alpha: "},
+      {{"chi2", "--material", lambertian, "--power", "0.001"}, "--power: "},
   };
   for (const Case& c : cases) {
     std::string command;

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "test_directory.h"
 #include "testing/child_process.h"
@@ -19,6 +20,20 @@ testing::Outcome chi2(const std::string& material, std::vector<std::string> extr
                                    material,      "--samples", "200000"};
   args.insert(args.end(), extra.begin(), extra.end());
   return testing::run(args);
+}
+
+// The command's exit status, stdout and stderr.
+struct Printed {
+  int status;
+  std::string stdoutText, stderrText;
+};
+Printed printed(const std::vector<std::string>& args) {
+  const std::filesystem::path out = testing::freshTestDirectory("verity-chi2-") / "stdout.txt";
+  std::string command = "'" VERITY_BINARY "' chi2";
+  for (const std::string& a : args) command += " '" + a + "'";
+  const testing::Outcome r = testing::run({"/bin/sh", "-c", command + " > '" + out.string() + "'"});
+  std::ifstream in(out);
+  return {r.status, std::string(std::istreambuf_iterator<char>(in), {}), r.stderrText};
 }
 
 std::string roughDielectric(double ior) {
@@ -80,6 +95,43 @@ TEST(Chi2Command, AnUnwritableOutputIsAnError) {
             std::string::npos)
       << r.stderrText;
   EXPECT_EQ(r.stderrText.find("PASSED"), std::string::npos) << r.stderrText;
+}
+
+// Every verdict states what it could have caught.
+TEST(Chi2Command, APassStatesWhatItCouldHaveCaught) {
+  const Printed r = printed({"--material", R"({"type":"lambertian"})", "--samples", "200000"});
+  EXPECT_EQ(r.status, 0) << r.stderrText;
+  EXPECT_NE(r.stdoutText.find("PASSED in"), std::string::npos) << r.stdoutText;
+  EXPECT_NE(r.stdoutText.find("density error over cells holding 1/4 of the mass"),
+            std::string::npos)
+      << r.stdoutText;
+  EXPECT_NE(r.stdoutText.find("would have been found with 90% probability"), std::string::npos)
+      << r.stdoutText;
+}
+
+// --detect chooses the sample count; a target beyond --max-samples is INCONCLUSIVE (status 3).
+TEST(Chi2Command, DetectChoosesTheSamplesAndABudgetTooSmallIsInconclusive) {
+  const std::vector<std::string> lambertian = {"--material", R"({"type":"lambertian"})", "--detect",
+                                               "0.05"};
+  const Printed chosen = printed(lambertian);
+  EXPECT_EQ(chosen.status, 0) << chosen.stderrText;
+  EXPECT_NE(chosen.stdoutText.find("chosen to find a 5% density error"), std::string::npos)
+      << chosen.stdoutText;
+  std::vector<std::string> small = lambertian;
+  small.insert(small.end(), {"--max-samples", "1000"});
+  const Printed budget = printed(small);
+  EXPECT_EQ(budget.status, 3) << budget.stdoutText << budget.stderrText;
+  EXPECT_NE(budget.stdoutText.find("more than the budget of 1000"), std::string::npos)
+      << budget.stdoutText;
+  EXPECT_EQ(budget.stdoutText.find("PASSED"), std::string::npos) << budget.stdoutText;
+}
+
+// An inconclusive run shows no statistic of a test that did not run.
+TEST(Chi2Command, AnInconclusiveRunPrintsNoStatisticOfATestThatDidNotRun) {
+  const Printed r = printed({"--material", R"({"type":"lambertian"})", "--samples", "8"});
+  EXPECT_EQ(r.status, 3) << r.stdoutText << r.stderrText;
+  EXPECT_NE(r.stdoutText.find("chi-square: not run"), std::string::npos) << r.stdoutText;
+  EXPECT_EQ(r.stdoutText.find("p-value"), std::string::npos) << r.stdoutText;
 }
 
 }  // namespace

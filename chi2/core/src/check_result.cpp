@@ -13,6 +13,9 @@ CheckResult runCheck(const Subject& subject, const CheckOptions& options,
   o.significance = options.significance;
   o.seed = options.seed ? *options.seed : seedFromName(seedName);
   o.cells = options.cells;
+  o.power = options.power;
+  o.detect = options.detect;
+  o.maxSamples = options.maxSamples;
   CheckResult r;
   r.test = runSamplingTest(subject, o);
   return r;

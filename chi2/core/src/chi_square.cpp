@@ -11,31 +11,28 @@ double outrightThreshold(double significance, int cells) {
   return 1e-3 * significance / cells;
 }
 
-ChiSquareResult chiSquareTest(const std::vector<double>& expected,
-                              const std::vector<long long>& observed, double threshold) {
-  ChiSquareResult r;
-  r.outrightThreshold = threshold;
-  const size_t n = expected.size();
-  double poolE = 0;
-  double poolO = 0;
-  std::vector<std::pair<double, double>> regular;  // (expected, observed)
-  for (size_t c = 0; c < n; ++c) {
-    if (expected[c] < threshold && observed[c] > 0) {
-      r.outrightSamples += observed[c];
-      if (r.outrightCell < 0) {
-        r.outrightCell = static_cast<int>(c);
-        r.outrightExpected = expected[c];
-      }
-    }
+namespace {
+
+// Cells expecting fewer than 5 samples are pooled; the pool is a cell of its own when it
+// expects 5 or more (or nothing else is left), else it joins the smallest regular cell.
+// Returns (expected, observed) per tested cell; `observed` may be empty (planning).
+std::vector<std::pair<double, double>> poolCells(const std::vector<double>& expected,
+                                                 const std::vector<long long>& observed,
+                                                 int& pooledCells, double& pooledExpected) {
+  double poolE = 0, poolO = 0;
+  pooledCells = 0;
+  std::vector<std::pair<double, double>> regular;
+  for (size_t c = 0; c < expected.size(); ++c) {
+    const double o = observed.empty() ? 0.0 : static_cast<double>(observed[c]);
     if (expected[c] < 5) {
       poolE += expected[c];
-      poolO += static_cast<double>(observed[c]);
-      ++r.pooledCells;
+      poolO += o;
+      ++pooledCells;
     } else {
-      regular.emplace_back(expected[c], static_cast<double>(observed[c]));
+      regular.emplace_back(expected[c], o);
     }
   }
-  r.pooledExpected = poolE;
+  pooledExpected = poolE;
   if (poolE > 0 || poolO > 0) {
     if (poolE >= 5 || regular.empty()) {
       regular.emplace_back(poolE, poolO);
@@ -45,6 +42,33 @@ ChiSquareResult chiSquareTest(const std::vector<double>& expected,
       smallest->second += poolO;
     }
   }
+  return regular;
+}
+
+}  // namespace
+
+int plannedDof(const std::vector<double>& expected) {
+  int pooled = 0;
+  double pooledExpected = 0;
+  const size_t cells = poolCells(expected, {}, pooled, pooledExpected).size();
+  return cells < 2 ? 0 : static_cast<int>(cells) - 1;
+}
+
+ChiSquareResult chiSquareTest(const std::vector<double>& expected,
+                              const std::vector<long long>& observed, double threshold) {
+  ChiSquareResult r;
+  r.outrightThreshold = threshold;
+  for (size_t c = 0; c < expected.size(); ++c) {
+    if (expected[c] < threshold && observed[c] > 0) {
+      r.outrightSamples += observed[c];
+      if (r.outrightCell < 0) {
+        r.outrightCell = static_cast<int>(c);
+        r.outrightExpected = expected[c];
+      }
+    }
+  }
+  const std::vector<std::pair<double, double>> regular =
+      poolCells(expected, observed, r.pooledCells, r.pooledExpected);
   r.regularCells = static_cast<int>(regular.size());
   if (regular.size() < 2) {
     r.degenerate = true;

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 
@@ -19,20 +20,60 @@ uint64_t seedFromName(const std::string& name) {
   return h;
 }
 
-TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  TestResult r;
-  r.subject = subject.describe();
+namespace {
+
+// The samples a chi-square test needs to find `target` at `level`: N·w² must reach the
+// noncentrality of the test's dof, and the dof depends on how many cells expect five samples,
+// so the two are iterated to a fixed point (a few steps: the dof only grows with N).
+long long samplesForTarget(const DetectionTarget& target, const std::vector<double>& probability,
+                           double total, double level) {
+  const double w2 = std::pow(effectForDensityError(target.densityError, target.mass), 2);
+  std::vector<double> expected(probability.size());
+  int dof = std::max(1, static_cast<int>(probability.size()) - 1);
+  double valid = 0;
+  for (int step = 0; step < 16; ++step) {
+    valid = chiSquareNoncentrality(dof, level, target.power) / w2;
+    for (size_t i = 0; i < probability.size(); ++i) expected[i] = valid * probability[i] / total;
+    const int planned = std::max(1, plannedDof(expected));
+    if (planned == dof) break;
+    dof = planned;
+  }
+  // Valid samples are a fraction ∫pdf of those drawn.
+  const double drawn = std::ceil(valid / std::min(1.0, total));
+  return drawn >= 9e18 ? std::numeric_limits<long long>::max() : static_cast<long long>(drawn);
+}
+
+void validate(const TestOptions& options) {
   if (!(options.significance > 0 && options.significance < 1))
     throw std::invalid_argument(fmt::format(
         "the per-test significance level must be in (0, 1), not {}", options.significance));
-  if (options.samples < 1)
+  if (!(options.power > options.significance && options.power < 1))
+    throw std::invalid_argument(fmt::format("the power must be in (level, 1) = ({}, 1), not {}",
+                                            options.significance, options.power));
+  if (options.detect) {
+    validate(*options.detect);
+    if (options.maxSamples < 1)
+      throw std::invalid_argument(
+          fmt::format("the sample budget must be at least 1, not {}", options.maxSamples));
+  } else if (options.samples < 1) {
     throw std::invalid_argument(
         fmt::format("the number of samples must be at least 1, not {}", options.samples));
+  }
+}
+
+}  // namespace
+
+TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  validate(options);
+  TestResult r;
+  r.subject = subject.describe();
   r.significance = options.significance;
-  r.samples = options.samples;
-  // The density, guarded: non-finite or negative values are defects, and are replaced by
-  // zero so that the quadrature still terminates.
+  r.integralTolerance = options.integralTolerance;
+
+  // The claimed density over every cell first: a caller's target sizes the sample count from
+  // it. Non-finite or negative values are defects, and are replaced by zero so that the
+  // quadrature still terminates.
   std::atomic<long long> badPdf{0}, negativePdf{0};
   std::mutex exampleMutex;
   std::string badExample;
@@ -47,23 +88,43 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   };
   const DensityFeatures features{[&](double x) { return subject.breakpointsY(x); },
                                  subject.breakpointsX(), subject.peaks()};
-  // The cells, cut from the subject's domain before sampling: equal-probability cells
-  // follow the claimed pdf (partition.h).
+  // The cells, cut from the subject's domain: equal-probability cells follow the claimed pdf
+  // (partition.h).
   r.domain = cellsFor(subject.domain(), options.cells, pdf, features, options.quadrature);
   const Domain& d = r.domain;
   const int cells = d.cells();
+  const std::vector<CellIntegral> integrals = integrateGrid(pdf, d, options.quadrature, features);
+  r.probability.resize(cells);
+  double total = 0;
+  for (int i = 0; i < cells; ++i) {
+    r.probability[i] = integrals[i].value;
+    total += integrals[i].value;
+    r.quadratureError += integrals[i].error;
+  }
+
+  r.samples = options.samples;
+  if (options.detect && total > 0) {
+    r.target = options.detect;
+    r.maxSamples = options.maxSamples;
+    r.neededSamples = samplesForTarget(*options.detect, r.probability, total, r.significance);
+    r.samples = std::min(r.neededSamples, options.maxSamples);
+  } else if (options.detect) {
+    // Nothing is claimed, so no sample may be drawn: the budget tests that at its most.
+    r.samples = options.maxSamples;
+  }
 
   // Sampling, in fixed chunks with one PCG32 stream each: the result does not depend on
   // the number of threads or their scheduling.
+  const long long deltaBefore = subject.deltaSamples();
   constexpr long long kChunk = 1 << 16;
-  const long long chunks = (options.samples + kChunk - 1) / kChunk;
+  const long long chunks = (r.samples + kChunk - 1) / kChunk;
   std::vector<std::vector<long long>> partial(chunks);
   std::vector<long long> validPerChunk(chunks, 0), outsidePerChunk(chunks, 0);
   std::vector<Audit> audits(chunks);
   tbb::parallel_for(0LL, chunks, [&](long long c) {
     pcg32 rng(options.seed, static_cast<uint64_t>(c));
     std::vector<long long> hist(cells, 0);
-    const long long n = std::min(kChunk, options.samples - c * kChunk);
+    const long long n = std::min(kChunk, r.samples - c * kChunk);
     for (long long k = 0; k < n; ++k) {
       const std::optional<Point2d> p = subject.sample(rng, audits[c]);
       if (!p) continue;
@@ -84,15 +145,7 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
     r.outside += outsidePerChunk[c];
   }
 
-  const std::vector<CellIntegral> integrals = integrateGrid(pdf, d, options.quadrature, features);
-  r.probability.resize(cells);
-  double total = 0;
-  for (int i = 0; i < cells; ++i) {
-    r.probability[i] = integrals[i].value;
-    total += integrals[i].value;
-    r.quadratureError += integrals[i].error;
-  }
-
+  r.deltaSamples = subject.deltaSamples() - deltaBefore;
   for (const Audit& a : audits) r.audit.merge(a);
   if (badPdf) r.audit.record(Defect::NonFinite, badExample);
   if (negativePdf) r.audit.record(Defect::Negative, badExample);
@@ -105,7 +158,11 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
     r.expected[i] = total > 0 ? r.valid * r.probability[i] / total : 0.0;
   r.chiSquare = chiSquareTest(r.expected, r.observed, outrightThreshold(r.significance, cells));
   r.integral = checkIntegral(total, r.samples, r.valid, r.significance, options.integralTolerance);
-  r.integralTolerance = options.integralTolerance;
+  if (!r.chiSquare.degenerate)
+    r.chiSquarePower = chiSquarePower(r.chiSquare.dof, static_cast<double>(r.valid), r.significance,
+                                      options.power);
+  r.integralPower =
+      integralPower(total, r.samples, r.significance, options.integralTolerance, options.power);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
@@ -130,17 +187,21 @@ std::string TestResult::inconclusiveReason() const {
         "expected counts and the pdf integral cannot be trusted",
         quadratureError, integralTolerance);
   if (!chiSquarePassed() || !integral.passed) return {};
-  if (valid == 0)
-    return fmt::format(
-        "no valid sample among {}: the sampler declined every one (or returned "
-        "only delta lobes), so there was nothing to histogram",
-        samples);
-  if (chiSquare.degenerate)
-    return fmt::format(
+  std::string reason;
+  if (valid == 0 && deltaSamples > 0)
+    reason = fmt::format(
+        "no valid sample among {}: {} were delta lobes, which the histogram cannot test{}", samples,
+        deltaSamples, deltaSamples < samples ? ", and the others were declined" : "");
+  if (valid > 0 && chiSquare.degenerate)
+    reason = fmt::format(
         "only {} cell(s) expect at least 5 of the {} valid samples after "
         "pooling: the chi-square test needs two",
         chiSquare.regularCells, valid);
-  return {};
+  if (!targetReached())
+    reason +=
+        fmt::format("{}finding {} needs {} samples, more than the budget of {}",
+                    reason.empty() ? "" : "; ", target->describe(), neededSamples, maxSamples);
+  return reason;
 }
 
 Verdict TestResult::verdict() const {
@@ -151,16 +212,43 @@ Verdict TestResult::verdict() const {
 }
 
 std::string TestResult::report() const {
-  std::string s = fmt::format("{}\n  domain {}, {} samples, significance {:.3g} (Sidak)\n", subject,
-                              domain.name(), samples, significance);
-  s += fmt::format("  [{}] {}\n", chiSquarePassed() ? "pass" : "FAIL", chiSquare.describe());
-  if (outside > 0) s += fmt::format("         {} valid sample(s) outside the domain\n", outside);
-  s += fmt::format("  [{}] {} (quadrature error estimate {:.2e})\n",
-                   integral.passed ? "pass" : "FAIL", integral.describe(), quadratureError);
+  std::string s = fmt::format("{}\n  domain {}, {} samples", subject, domain.name(), samples);
+  if (target)
+    s += fmt::format(" ({} to find {}{})", targetReached() ? "chosen" : "the budget",
+                     target->describe(),
+                     targetReached() ? "" : fmt::format(", which needs {}", neededSamples));
+  s += fmt::format(", level {:.3g} per test\n", significance);
+  const std::string indent = "         ";
+  // A statistic is shown only for a test that ran: an inconclusive run's expected counts are
+  // the quadrature's, and a degenerate histogram has no statistic.
+  if (chiSquareRan()) {
+    s += fmt::format("  [{}] {}\n", chiSquarePassed() ? "pass" : "FAIL", chiSquare.describe());
+    s += indent + "could have caught: " + chiSquarePower.describe() + "\n";
+  } else if (chiSquare.outrightSamples > 0) {
+    s += fmt::format("  [FAIL] {}\n", chiSquare.describe());
+  } else {
+    s += fmt::format("  [ -- ] chi-square: not run ({})\n",
+                     valid == 0           ? "no valid sample to histogram"
+                     : !quadratureHolds() ? "the expected counts are not trustworthy"
+                                          : "fewer than two cells expect 5 samples");
+  }
+  if (outside > 0) s += indent + fmt::format("{} valid sample(s) outside the domain\n", outside);
+  if (quadratureHolds()) {
+    s += fmt::format("  [{}] {} (quadrature error estimate {:.2e})\n",
+                     integral.passed ? "pass" : "FAIL", integral.describe(), quadratureError);
+    s += indent + "could have caught: " + integralPower.describe() + "\n";
+  } else {
+    s += fmt::format("  [ -- ] pdf integral: not run (quadrature error estimate {:.2e})\n",
+                     quadratureError);
+  }
   s += fmt::format("  [{}] {}\n", audit.clean() ? "pass" : "FAIL", audit.describe());
-  const std::string reason = inconclusiveReason();
-  if (!reason.empty()) s += fmt::format("  inconclusive: {}\n", reason);
-  s += fmt::format("  {} in {:.2f} s", verdictName(verdict()), seconds);
+  const Verdict v = verdict();
+  s += fmt::format("  {} in {:.2f} s", verdictName(v), seconds);
+  if (v == Verdict::Inconclusive) s += ": " + inconclusiveReason();
+  if (v == Verdict::Passed)
+    s += ": " + (chiSquareRan() ? chiSquarePower.describe()
+                                : "the sampler declined every sample and pdf() claims no mass; " +
+                                      integralPower.describe());
   return s;
 }
 

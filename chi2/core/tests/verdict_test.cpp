@@ -12,11 +12,11 @@ namespace verity::chi2 {
 namespace {
 
 // Uniform samples on the unit square with a claimed density `scale` (1 is right), or no
-// sample at all when `declines`, or a density with a narrow spike the quadrature is not
-// told about (so its error estimate stays far above the tolerance).
+// sample at all (with a zero density, or the uniform one), or a density with a narrow spike the
+// quadrature is not told about (so its error estimate stays far above the tolerance).
 class SquareSubject : public Subject {
  public:
-  enum class Kind { Uniform, Declines, HiddenSpike, NanSample };
+  enum class Kind { Uniform, Declines, DeclinesButClaims, HiddenSpike, NanSample };
   SquareSubject(Kind kind, double scale = 1) : kind_(kind), scale_(scale) {}
   const Domain& domain() const override { return domain_; }
   double pdf(double x, double y) const override {
@@ -28,7 +28,7 @@ class SquareSubject : public Subject {
     return kind_ == Kind::Declines ? 0.0 : scale_;
   }
   std::optional<Point2d> sample(pcg32& rng, Audit& audit) const override {
-    if (kind_ == Kind::Declines) return std::nullopt;
+    if (kind_ == Kind::Declines || kind_ == Kind::DeclinesButClaims) return std::nullopt;
     const Point2d p(uniform01(rng), uniform01(rng));
     if (kind_ == Kind::NanSample && p.x() < 1e-3) {
       audit.record(Defect::NonFinite, "a made-up NaN");
@@ -65,13 +65,24 @@ TEST(FrameworkVerdict, WrongNormalisationFails) {
   EXPECT_EQ(r.verdict(), Verdict::Failed) << r.report();
 }
 
-TEST(FrameworkVerdict, NothingSampledIsInconclusiveNotPassed) {
+TEST(FrameworkVerdict, NothingSampledAndNothingClaimedPassesOnTheIntegralAlone) {
+  // A material lit exactly at grazing incidence: it declines every sample and its pdf is
+  // zero. The pdf-integral test checks that claim; the chi-square test has nothing to see and
+  // shows no statistic.
   const TestResult r = run(SquareSubject(SquareSubject::Kind::Declines));
   EXPECT_EQ(r.valid, 0);
-  EXPECT_EQ(r.verdict(), Verdict::Inconclusive) << r.report();
-  EXPECT_NE(r.inconclusiveReason().find("no valid sample"), std::string::npos);
-  EXPECT_NE(r.report().find("INCONCLUSIVE"), std::string::npos);
-  EXPECT_EQ(r.report().find("PASSED"), std::string::npos);
+  EXPECT_EQ(r.verdict(), Verdict::Passed) << r.report();
+  EXPECT_NE(r.report().find("chi-square: not run (no valid sample"), std::string::npos)
+      << r.report();
+  EXPECT_EQ(r.report().find("p-value"), std::string::npos) << r.report();
+  ASSERT_TRUE(r.integralPower.detectable());
+}
+
+TEST(FrameworkVerdict, NothingSampledWhileMassIsClaimedFails) {
+  const TestResult r = run(SquareSubject(SquareSubject::Kind::DeclinesButClaims));
+  EXPECT_EQ(r.valid, 0);
+  EXPECT_EQ(r.verdict(), Verdict::Failed) << r.report();
+  EXPECT_FALSE(r.integral.passed);
 }
 
 TEST(FrameworkVerdict, TooFewSamplesForTwoCellsIsInconclusive) {

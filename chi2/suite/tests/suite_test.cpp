@@ -2,7 +2,10 @@
 // `Quick` instantiations form the quick subset; the others run under the chi2-full label.
 #include "chi2/suite/suite.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+
+#include <optional>
 
 #include "failure_figure.h"
 
@@ -24,8 +27,21 @@ std::string caseName(const ::testing::TestParamInfo<Case>& info) {
 }
 
 // A failing configuration's message names its figure (failure_figure.h). An inconclusive
-// one fails the suite too: the suite claims every configuration was tested.
+// one fails the suite too: the suite claims every configuration was tested. What each one
+// could have caught is recorded in the test's properties, from which
+// scripts/chi2_power_report tabulates the sweep.
 void expectPassed(const TestResult& r) {
+  const auto record = [](const char* key, double value) {
+    ::testing::Test::RecordProperty(key, fmt::format("{:.6g}", value));
+  };
+  record("valid_samples", static_cast<double>(r.valid));
+  if (r.chiSquareRan()) {
+    record("dof", r.chiSquare.dof);
+    record("density_error_quarter", r.chiSquarePower.densityError(kStatedMass));
+    record("density_error_sixteenth", r.chiSquarePower.densityError(kStatedSmallMass));
+  }
+  if (const std::optional<double> d = r.integralPower.detectable())
+    record("normalisation_error", *d);
   if (r.passed()) return;
   const std::string message = r.report() + "\n" + testing::failureFigure(r);
   EXPECT_EQ(r.inconclusiveReason(), "") << message;

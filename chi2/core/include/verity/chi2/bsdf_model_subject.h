@@ -46,7 +46,7 @@ class BsdfModelSubject : public Subject {
   std::vector<Point2d> peaks() const override;
   std::string describe() const override;
 
-  long long deltaSamples() const { return delta_.load(); }
+  long long deltaSamples() const override { return delta_.load(); }
 
  private:
   // f: eval(wi, wo), already computed by sample().

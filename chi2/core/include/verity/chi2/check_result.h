@@ -27,6 +27,12 @@ struct CheckOptions {
   // Cells in cos θ on the sphere (twice as many in φ) or along each side of a planar
   // domain; 0: 32 on the sphere and 40 on a plane, as in Verity's suite.
   int resolution = 0;
+  // The probability at which the report states what the check could have caught.
+  double power = kDefaultPower;
+  // The caller's question (power.h): when set, `samples` is ignored and the check draws as
+  // many as finding this target needs, at most maxSamples; beyond that it is INCONCLUSIVE.
+  std::optional<DetectionTarget> detect;
+  long long maxSamples = 100'000'000;
   // The uniform grid, or cells of equal probability under the claimed pdf (partition.h):
   // more power on narrow lobes, at more quadrature (TestOptions::cells).
   CellLayout cells = CellLayout::Grid;

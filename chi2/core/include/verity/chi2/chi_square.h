@@ -34,6 +34,10 @@ struct ChiSquareResult {
 ChiSquareResult chiSquareTest(const std::vector<double>& expected,
                               const std::vector<long long>& observed, double outrightThreshold);
 
+// The dof the test will have when the cells expect these counts (the same pooling rule);
+// 0 when fewer than two cells remain. A check that sizes its sample count plans with it.
+int plannedDof(const std::vector<double>& expected);
+
 // The outright threshold used by the suite: with `cells` cells, the chance that a correct
 // sampler puts any sample in a cell expecting fewer than τ samples is at most cells · τ;
 // τ = 10⁻³ · α / cells keeps it at a thousandth of the per-test level α.

@@ -7,10 +7,12 @@
 #include <verity/chi2/chi_square.h>
 #include <verity/chi2/integral_check.h>
 #include <verity/chi2/partition.h>
+#include <verity/chi2/power.h>
 #include <verity/chi2/quadrature.h>
 #include <verity/chi2/subject.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,13 @@ struct TestOptions {
   // The grid by default: equal-probability cells made single tests 1.5-4 times slower
   // (Phong with exponent 10⁴: 10 times; docs/checks.md, "Cells that follow the density").
   CellLayout cells = CellLayout::Grid;
+  // The probability at which the result states what the test could have caught.
+  double power = kDefaultPower;
+  // The caller's question. When set, `samples` is ignored: the test draws the samples the
+  // target needs (from the cells' probabilities and the chi-square test's dof), at most
+  // maxSamples; a target beyond that budget is never PASSED.
+  std::optional<DetectionTarget> detect;
+  long long maxSamples = 100'000'000;
 };
 
 // What a sampling test concluded. PASSED only when every check ran with the power it
@@ -42,7 +51,8 @@ struct TestResult {
   Domain domain;  // the cells histogrammed in (TestOptions::cells of the subject's domain)
   double significance = 0;
   long long samples = 0, valid = 0;
-  long long outside = 0;            // valid samples outside the domain's support: outright failures
+  long long outside = 0;       // valid samples outside the domain's support: outright failures
+  long long deltaSamples = 0;  // declined samples that were delta lobes (Subject::deltaSamples)
   std::vector<double> probability;  // ∫ pdf over each cell
   std::vector<double> expected;     // expected counts given the number of valid samples
   std::vector<long long> observed;
@@ -54,6 +64,18 @@ struct TestResult {
 
   double integralTolerance = 0;  // the stated quadrature tolerance on ∫pdf
 
+  // What the two statistical tests could have caught at their level (see power.h).
+  ChiSquarePower chiSquarePower;
+  IntegralPower integralPower;
+  // The caller's target, and the samples it needs (above maxSamples: not reached).
+  std::optional<DetectionTarget> target;
+  long long neededSamples = 0, maxSamples = 0;
+  bool targetReached() const { return !target || neededSamples <= maxSamples; }
+
+  // The chi-square test ran when there were valid samples, at least two cells after pooling
+  // and trustworthy expected counts; otherwise no statistic of it is shown.
+  bool chiSquareRan() const { return valid > 0 && !chiSquare.degenerate && quadratureHolds(); }
+
   bool chiSquarePassed() const { return outside == 0 && chiSquare.passed(significance); }
   // The cell probabilities are as accurate as the integral check states: the summed error
   // estimate lies within its tolerance. Otherwise the expected counts, the pdf integral and
@@ -61,8 +83,10 @@ struct TestResult {
   bool quadratureHolds() const { return quadratureError <= integralTolerance; }
   // FAILED on a defect that needs no quadrature (a per-sample defect, a sample outside the
   // support); else INCONCLUSIVE when the quadrature does not hold; else FAILED on the
-  // chi-square or pdf-integral test; else INCONCLUSIVE when no valid sample was drawn or
-  // too few cells expect enough samples for the chi-square test; else PASSED.
+  // chi-square or pdf-integral test; else INCONCLUSIVE when too few cells expect enough
+  // samples for the chi-square test, or when the caller's target needed more samples than
+  // the budget; else PASSED. A sampler that declines every sample while its pdf integrates
+  // to zero is PASSED on the pdf-integral test alone: it claims nothing, and draws nothing.
   Verdict verdict() const;
   // Why the verdict is INCONCLUSIVE; empty otherwise.
   std::string inconclusiveReason() const;

@@ -33,6 +33,9 @@ class Subject {
   // a refraction direction at tiny roughness or an index near 1): the quadrature grades its
   // cuts towards them instead of hoping that bisection finds them.
   virtual std::vector<Point2d> peaks() const { return {}; }
+  // How many samples so far were delta lobes (a mirror, a refraction), which sample() counts
+  // and declines: a histogram cannot test them, so a test of nothing else is not PASSED.
+  virtual long long deltaSamples() const { return 0; }
   // Deterministic checks independent of sampling (e.g. eval at cell centres).
   virtual void extraChecks(Audit& audit) const {}
   virtual std::string describe() const = 0;
