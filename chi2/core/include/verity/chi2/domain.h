@@ -44,7 +44,8 @@ struct Domain {
 
   int cells() const { return nx * ny; }
   bool uniform() const { return xEdges.empty(); }
-  // The uniform grid's cell size (uniform() only; cell() holds for every layout).
+  // The uniform grid's cell size: the nominal size under other layouts, whose own cells
+  // cell() gives.
   double cellWidth() const { return (x1 - x0) / nx; }
   double cellHeight() const { return (y1 - y0) / ny; }
   double xEdge(int i) const;
