@@ -50,6 +50,7 @@ struct Chi2Args {
   uint64_t seed = 1;
   std::string output;
   bool seedTable = false;
+  std::string cells = "grid";  // chi2::parseCellLayout
 };
 
 Vector3f parseVector(const std::string& text) {
@@ -75,6 +76,7 @@ chi2::TestOptions testOptions(const Chi2Args& a) {
         o.significance, a.power));
   if (a.detect) o.detect = chi2::DetectionTarget{*a.detect, a.mass, a.power};
   o.maxSamples = a.maxSamples;
+  o.cells = chi2::parseCellLayout(a.cells);
   return o;
 }
 
@@ -237,6 +239,12 @@ void addChi2Command(CLI::App& app, const ProcessGroup& group) {
                   "/usr/bin/python3, or $VERITY_PYTHON), and its data "
                   "PREFIX.json; missing folders are created")
       ->type_name("PREFIX");
+  cmd->add_option("--cells", args->cells,
+                  "the histogram's cells: 'grid', the uniform grid of (phi, cos theta), or "
+                  "'equal', of equal probability under the claimed pdf (a narrow lobe keeps as "
+                  "many cells as a diffuse one; slower)")
+      ->check(CLI::IsMember({"equal", "grid"}))
+      ->default_str("grid");
   cmd->add_flag("--seed-table", args->seedTable, "print the seed report's table next to ours");
   cmd->callback([args] {
     if (!args->seedTable && args->material.empty())

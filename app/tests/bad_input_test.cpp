@@ -74,6 +74,8 @@ TEST_F(BadInput, EveryCommandExitsWithTwoAndNamesWhatItIsAbout) {
       {{"compare", missingExr, missingExr, "-o", scene_ + "/report.json"}, "-o: cannot create"},
       {{"chi2", "--material", R"({"type":"nope"})"}, "nope"},
       {{"chi2", "--incoming", "10"}, "--material"},
+      {{"chi2", "--material", R"({"type":"ggx"})", "--cells", "fine"},
+       "--cells: fine not in {equal,grid}"},
       {{"chi2", "--material", lambertian, "--mass", "0.1"}, "--mass requires --detect"},
       {{"chi2", "--material", lambertian, "--detect", "0.01", "--samples", "10"}, "--detect"},
       {{"chi2", "--material", lambertian, "--detect", "0"}, "--detect: "},

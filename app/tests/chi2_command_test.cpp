@@ -72,6 +72,18 @@ TEST(Chi2Command, OutputWritesTheFigureAndItsData) {
   EXPECT_TRUE(std::filesystem::exists(prefix.string() + ".json"));
 }
 
+// --cells equal histograms in cells of equal probability, and the figure's data say so.
+TEST(Chi2Command, EqualCellsAreTheCellsOfTheFigure) {
+  const std::filesystem::path prefix = testing::freshTestDirectory("verity-chi2-") / "ggx";
+  const testing::Outcome r = chi2(R"({"type":"ggx","alpha":0.1})",
+                                  {"--incoming", "45", "--cells", "equal", "-o", prefix.string()});
+  EXPECT_EQ(r.status, 0) << r.stderrText;
+  std::ifstream data(prefix.string() + ".json");
+  const std::string json((std::istreambuf_iterator<char>(data)), std::istreambuf_iterator<char>());
+  EXPECT_NE(json.find(R"("uniform":false)"), std::string::npos);
+  EXPECT_NE(json.find("64x32 equal-probability cells"), std::string::npos);
+}
+
 // A prefix whose folder cannot be made (a file stands in its way) is refused before the test.
 TEST(Chi2Command, AnUnwritableOutputIsAnError) {
   const std::filesystem::path dir = testing::freshTestDirectory("verity-chi2-");

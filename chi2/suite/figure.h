@@ -1,6 +1,7 @@
-// The picture of one sampling test: its histogram and verdicts are written as JSON, and
-// chi2/plot_chi2.py (run by the first Python with matplotlib, and found in share/verity beside
-// the program's bin folder: core/program_files.h) draws them as one figure:
+// The picture of one sampling test: its histogram and verdicts are written as JSON
+// (<verity/chi2/figure_data.h>, in the package), and chi2/core/plot_chi2.py (run by the first
+// Python with matplotlib, and found in share/verity beside the program's bin folder:
+// core/program_files.h) draws them as one figure:
 // observed and expected counts side by side on one logarithmic colour scale, the standardised
 // difference (O − E)/√E on a diverging scale, the axes named from the domain (φ and cos θ on the
 // sphere, x and y on the square and disk, b₀ and b₁ on the triangle) and the configuration, verdict
@@ -10,16 +11,11 @@
 
 #include <verity/chi2/sampling_check.h>
 
-#include <nlohmann/json.hpp>
 #include <string>
 
 namespace verity::chi2 {
 
-// The figure's input: the domain (kind, axis names, bin edges), the observed and expected
-// counts as rows of constant y from y0 up, every check's verdict and the chi-square p-value.
-nlohmann::json figureData(const TestResult& result);
-
-// Writes PREFIX.json (figureData) and draws PREFIX.png from it; returns the PNG's path.
+// Writes PREFIX.json (writeFigureData) and draws PREFIX.png from it; returns the PNG's path.
 // Throws VerityError when the figure cannot be drawn (the JSON is kept).
 std::string writeFigure(const TestResult& result, const std::string& prefix);
 

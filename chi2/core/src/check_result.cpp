@@ -12,6 +12,7 @@ CheckResult runCheck(const Subject& subject, const CheckOptions& options,
   o.samples = options.samples;
   o.significance = options.significance;
   o.seed = options.seed ? *options.seed : seedFromName(seedName);
+  o.cells = options.cells;
   o.power = options.power;
   o.detect = options.detect;
   o.maxSamples = options.maxSamples;

@@ -1,5 +1,6 @@
 #include <verity/chi2/domain.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -18,6 +19,20 @@ std::pair<double, double> Domain::clipY(double x, double lo, double hi) const {
   }
 }
 
+std::pair<double, double> Domain::supportY(double xa, double xb) const {
+  switch (kind) {
+    case DomainKind::Disk: {
+      const double nearest = xa <= 0 && xb >= 0 ? 0 : std::min(xa * xa, xb * xb);
+      const double h = std::sqrt(std::max(0.0, 1 - nearest));
+      return {-h, h};
+    }
+    case DomainKind::Triangle:
+      return {0.0, std::clamp(1 - xa, 0.0, 1.0)};
+    default:
+      return {y0, y1};
+  }
+}
+
 bool Domain::inSupport(const Point2d& p) const {
   if (!(p.x() >= x0 && p.x() <= x1 && p.y() >= y0 && p.y() <= y1)) return false;
   switch (kind) {
@@ -30,8 +45,35 @@ bool Domain::inSupport(const Point2d& p) const {
   }
 }
 
+double Domain::xEdge(int i) const {
+  if (!uniform()) return xEdges[i];
+  return i == nx ? x1 : x0 + (x1 - x0) * i / nx;
+}
+
+double Domain::yEdge(int i, int j) const {
+  if (!uniform()) return yEdges[i * (ny + 1) + j];
+  return j == ny ? y1 : y0 + (y1 - y0) * j / ny;
+}
+
+CellBounds Domain::cell(int c) const {
+  const int i = c % nx, j = c / nx;
+  return {xEdge(i), xEdge(i + 1), yEdge(i, j), yEdge(i, j + 1)};
+}
+
+namespace {
+// The piece of [edges[0], edges[n]] holding v: edges[k] ≤ v < edges[k + 1], the last closed.
+int pieceOf(std::vector<double>::const_iterator first, int n, double v) {
+  const int k = static_cast<int>(std::upper_bound(first, first + n + 1, v) - first) - 1;
+  return std::clamp(k, 0, n - 1);
+}
+}  // namespace
+
 int Domain::cellOf(const Point2d& p) const {
   if (!(p.x() >= x0 && p.x() <= x1 && p.y() >= y0 && p.y() <= y1)) return -1;
+  if (!uniform()) {
+    const int i = pieceOf(xEdges.begin(), nx, p.x());
+    return pieceOf(yEdges.begin() + i * (ny + 1), ny, p.y()) * nx + i;
+  }
   const int i = std::min(nx - 1, static_cast<int>((p.x() - x0) / (x1 - x0) * nx));
   const int j = std::min(ny - 1, static_cast<int>((p.y() - y0) / (y1 - y0) * ny));
   return j * nx + i;
@@ -39,21 +81,38 @@ int Domain::cellOf(const Point2d& p) const {
 
 std::string Domain::name() const {
   const char* names[] = {"sphere (phi, cos theta)", "square", "disk", "triangle (barycentric)"};
-  return std::string(names[static_cast<int>(kind)]) + " " + std::to_string(nx) + "x" +
-         std::to_string(ny);
+  std::string s = std::string(names[static_cast<int>(kind)]) + " " + std::to_string(nx) + "x" +
+                  std::to_string(ny);
+  if (!uniform()) return s + " equal-probability cells";
+  if (!gridReason.empty()) return s + " grid (" + gridReason + ")";
+  return s;
 }
 
+namespace {
+Domain grid(DomainKind kind, int nx, int ny, double x0, double x1, double y0, double y1) {
+  Domain d;
+  d.kind = kind;
+  d.nx = nx;
+  d.ny = ny;
+  d.x0 = x0;
+  d.x1 = x1;
+  d.y0 = y0;
+  d.y1 = y1;
+  return d;
+}
+}  // namespace
+
 Domain sphereDomain(int thetaCells) {
-  return {DomainKind::Sphere, 2 * thetaCells, thetaCells, 0, 2 * std::numbers::pi, -1, 1};
+  return grid(DomainKind::Sphere, 2 * thetaCells, thetaCells, 0, 2 * std::numbers::pi, -1, 1);
 }
 Domain squareDomain(int cells) {
-  return {DomainKind::Square, cells, cells, 0, 1, 0, 1};
+  return grid(DomainKind::Square, cells, cells, 0, 1, 0, 1);
 }
 Domain diskDomain(int cells) {
-  return {DomainKind::Disk, cells, cells, -1, 1, -1, 1};
+  return grid(DomainKind::Disk, cells, cells, -1, 1, -1, 1);
 }
 Domain triangleDomain(int cells) {
-  return {DomainKind::Triangle, cells, cells, 0, 1, 0, 1};
+  return grid(DomainKind::Triangle, cells, cells, 0, 1, 0, 1);
 }
 
 namespace {

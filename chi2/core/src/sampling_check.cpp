@@ -68,11 +68,8 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   validate(options);
   TestResult r;
   r.subject = subject.describe();
-  r.domain = subject.domain();
   r.significance = options.significance;
   r.integralTolerance = options.integralTolerance;
-  const Domain& d = r.domain;
-  const int cells = d.cells();
 
   // The claimed density over every cell first: a caller's target sizes the sample count from
   // it. Non-finite or negative values are defects, and are replaced by zero so that the
@@ -91,6 +88,11 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   };
   const DensityFeatures features{[&](double x) { return subject.breakpointsY(x); },
                                  subject.breakpointsX(), subject.peaks()};
+  // The cells, cut from the subject's domain: equal-probability cells follow the claimed pdf
+  // (partition.h).
+  r.domain = cellsFor(subject.domain(), options.cells, pdf, features, options.quadrature);
+  const Domain& d = r.domain;
+  const int cells = d.cells();
   const std::vector<CellIntegral> integrals = integrateGrid(pdf, d, options.quadrature, features);
   r.probability.resize(cells);
   double total = 0;

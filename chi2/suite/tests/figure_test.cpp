@@ -3,14 +3,21 @@
 #include "chi2/suite/figure.h"
 
 #include <gtest/gtest.h>
+#include <verity/chi2/figure_data.h>
+#include <verity/chi2/partition.h>
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <numbers>
 
 namespace verity::chi2 {
 
 namespace {
+
+nlohmann::json figureData(const TestResult& r) {
+  return nlohmann::json::parse(figureJson(r));
+}
 
 Domain threeByTwo() {
   Domain d = squareDomain(2);
@@ -41,7 +48,10 @@ TEST(FrameworkFigure, DataHoldsTheHistogramByRowsAndTheVerdicts) {
   EXPECT_EQ(j["domain"]["x_label"], "x");
   EXPECT_EQ(j["domain"]["x_edges"].size(), 4u);
   EXPECT_DOUBLE_EQ(j["domain"]["x_edges"][1].get<double>(), 1.0 / 3);
-  EXPECT_EQ(j["domain"]["y_edges"], nlohmann::json({0.0, 0.5, 1.0}));
+  // One list of y edges per strip, the same three on the grid.
+  EXPECT_EQ(j["domain"]["y_edges"],
+            nlohmann::json({{0.0, 0.5, 1.0}, {0.0, 0.5, 1.0}, {0.0, 0.5, 1.0}}));
+  EXPECT_EQ(j["domain"]["uniform"], true);
   // Row j holds the cells of constant y, from y0 up (numpy's (ny, nx) layout).
   EXPECT_EQ(j["observed"], nlohmann::json({{60, 40, 50}, {50, 50, 50}}));
   EXPECT_EQ(j["expected"][1][2], 50.0);
@@ -63,7 +73,7 @@ TEST(FrameworkFigure, AxesAreNamedFromTheDomain) {
   EXPECT_EQ(sphere["x_label"], "φ (radians)");
   EXPECT_EQ(sphere["y_label"], "cos θ");
   EXPECT_DOUBLE_EQ(sphere["x_edges"].back().get<double>(), 2 * std::numbers::pi);
-  EXPECT_EQ(sphere["y_edges"], nlohmann::json({-1.0, 1.0}));
+  EXPECT_EQ(sphere["y_edges"], nlohmann::json({{-1.0, 1.0}, {-1.0, 1.0}}));
   EXPECT_EQ(figureData(smallResult(diskDomain(1)))["domain"]["y_label"], "y");
   EXPECT_EQ(figureData(smallResult(triangleDomain(1)))["domain"]["kind"], "triangle");
 }
@@ -78,6 +88,28 @@ TEST(FrameworkFigure, WritesTheDataFileAndAPng) {
   std::ifstream data(dir / "small.json");
   EXPECT_EQ(nlohmann::json::parse(data), figureData(r));
   std::ifstream image(png, std::ios::binary);
+  char magic[4] = {};
+  image.read(magic, 4);
+  EXPECT_EQ(std::string(magic, 4), "\x89PNG");
+}
+
+TEST(FrameworkFigure, EqualProbabilityCellsCarryEachStripsEdges) {
+  // Cells of equal mass under x + 3y: each strip is cut at its own heights, which the data
+  // carry and the figure draws.
+  const Domain d =
+      equalProbabilityCells(threeByTwo(), [](double x, double y) { return x + 3 * y; });
+  ASSERT_FALSE(d.uniform());
+  const TestResult r = smallResult(d);
+  const nlohmann::json j = figureData(r)["domain"];
+  EXPECT_EQ(j["uniform"], false);
+  EXPECT_NE(j["name"].get<std::string>().find("equal-probability"), std::string::npos);
+  for (int i = 0; i <= d.nx; ++i) EXPECT_EQ(j["x_edges"][i].get<double>(), d.xEdge(i));
+  for (int i = 0; i < d.nx; ++i)
+    for (int k = 0; k <= d.ny; ++k) EXPECT_EQ(j["y_edges"][i][k].get<double>(), d.yEdge(i, k));
+  EXPECT_NE(d.yEdge(0, 1), d.yEdge(2, 1));  // the strips' cuts differ
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "verity-figure-test";
+  std::filesystem::create_directories(dir);
+  std::ifstream image(writeFigure(r, (dir / "equal").string()), std::ios::binary);
   char magic[4] = {};
   image.read(magic, 4);
   EXPECT_EQ(std::string(magic, 4), "\x89PNG");

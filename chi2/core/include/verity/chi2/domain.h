@@ -2,6 +2,8 @@
 // rectangle of parameters (x, y) split into nx × ny cells, with a support that may be a
 // sub-region of the rectangle (the disk, the triangle); densities are always expressed
 // with respect to dx dy, so the parameterisations are chosen to be measure-preserving.
+// The cells are axis-aligned rectangles: nx strips in x, each cut into ny cells in y,
+// either the uniform grid or with edges of their own (equal-probability cells, partition.h).
 #pragma once
 
 #include <Eigen/Core>
@@ -24,18 +26,38 @@ enum class DomainKind {
   Triangle,  // barycentric (b0, b1) with b0, b1 ≥ 0, b0 + b1 ≤ 1, inside [0, 1]²
 };
 
+// One cell's rectangle [x0, x1] × [y0, y1] (before clipping by the support).
+struct CellBounds {
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+};
+
 struct Domain {
   DomainKind kind = DomainKind::Square;
   int nx = 1, ny = 1;
   double x0 = 0, x1 = 1, y0 = 0, y1 = 1;
+  // The cells' own edges, where they are not the uniform grid's: nx + 1 strip edges from x0
+  // to x1, and for strip i its ny + 1 edges from y0 to y1 at yEdges[i·(ny + 1) …]. Empty:
+  // the uniform grid. Cell (i, j) is number j·nx + i either way.
+  std::vector<double> xEdges, yEdges;
+  // Why the cells are the uniform grid although others were asked for; empty otherwise.
+  std::string gridReason;
 
   int cells() const { return nx * ny; }
+  bool uniform() const { return xEdges.empty(); }
+  // The uniform grid's cell size: the nominal size under other layouts, whose own cells
+  // cell() gives.
   double cellWidth() const { return (x1 - x0) / nx; }
   double cellHeight() const { return (y1 - y0) / ny; }
+  double xEdge(int i) const;
+  double yEdge(int i, int j) const;  // strip i's j-th edge
+  CellBounds cell(int c) const;
   // The support's extent in y at abscissa x, clipped to [lo, hi]; empty when lo ≥ hi.
   std::pair<double, double> clipY(double x, double lo, double hi) const;
+  // The support's extent in y over the strip x ∈ [xa, xb] (the rectangle's where it is one).
+  std::pair<double, double> supportY(double xa, double xb) const;
   bool inSupport(const Point2d& p) const;
-  // The cell holding p, or −1 outside the rectangle. Cells are half-open, the last closed.
+  // The cell holding p, or −1 outside the rectangle. Cells are half-open, the last closed
+  // (binary search in the edges where they are not uniform).
   int cellOf(const Point2d& p) const;
   std::string name() const;
 };

@@ -66,6 +66,13 @@ struct CellIntegral {
   double error = 0;
 };
 
+// ∫∫ f over a rectangle of the domain, clipped by its support, split at the features (the
+// peaks inside it or within half its size of it), to the options as given: one nested
+// adaptive integral, with no share of a grid's budget and no second level.
+CellIntegral integrateRectangle(const DensityFn& f, const DensityFeatures& features,
+                                const Domain& domain, const CellBounds& rectangle,
+                                const QuadratureOptions& options);
+// One cell (domain.cell(cell), whatever the layout) to its share of gridAbsTolerance.
 CellIntegral integrateCell(const DensityFn& f, const DensityFeatures& features,
                            const Domain& domain, int cell, const QuadratureOptions& options);
 // All cells, in parallel over cells.

@@ -1,15 +1,18 @@
 #!/usr/bin/python3
 """The figure of one chi-square sampling test, drawn from the JSON written by
-chi2/figure.cpp (`verity chi2 -o PREFIX`, and the suite for every failing configuration):
+<verity/chi2/figure_data.h> (`verity chi2 -o PREFIX`, the suite for every failing
+configuration, or a check outside Verity with writeFigureData):
 
-    python3 chi2/plot_chi2.py PREFIX.json PREFIX.png
+    python3 share/verity/plot_chi2.py PREFIX.json PREFIX.png
 
 Three panels: observed and expected counts per cell on ONE logarithmic colour scale (a
 peaked lobe such as GGX with alpha 0.1 spans five decades, which a linear scale shows as a
 few bright cells on black), and the standardised difference (O - E)/sqrt(E), linear within
 three standard deviations and logarithmic beyond, so that both the noise of a correct
 sampler and the gross error of a broken one are readable. Grey cells lie outside the
-domain's support (nothing expected, nothing observed).
+domain's support (nothing expected, nothing observed). Every cell is drawn as the rectangle
+it is: strip i spans x_edges[i] to x_edges[i + 1] and is cut at its own y_edges[i]
+(equal-probability cells crowd where the density's mass lies).
 """
 import json
 import math
@@ -88,13 +91,23 @@ def label_axes(ax, domain):
         ax.set_aspect("equal")
 
 
+def draw_cells(ax, domain, values, **style):
+    """values (ny, nx) drawn strip by strip on each strip's own edges; the last mesh."""
+    x = domain["x_edges"]
+    for i, y in enumerate(domain["y_edges"]):
+        mesh = ax.pcolormesh(
+            np.array(x[i : i + 2]), np.array(y), values[:, i : i + 1], **style
+        )
+    return mesh
+
+
 def main():
     if len(sys.argv) != 3:
         sys.exit("usage: plot_chi2.py DATA.json OUT.png")
     with open(sys.argv[1]) as f:
         d = json.load(f)
     domain = d["domain"]
-    x, y = np.array(domain["x_edges"]), np.array(domain["y_edges"])
+    x, y = domain["x_edges"], domain["y_edges"]
     observed = np.array(d["observed"], dtype=float)
     expected = np.array(d["expected"], dtype=float)
     outside = (expected <= 0) & (observed <= 0)
@@ -121,19 +134,19 @@ def main():
     fig, axes = plt.subplots(1, 3, figsize=(18, 5.6) if wide else (16, 6.2), layout="constrained")
     for ax, values, name in ((axes[0], observed, "observed"), (axes[1], expected, "expected")):
         shown = np.where(outside, np.nan, np.maximum(values, counts.vmin / 2))
-        image = ax.pcolormesh(x, y, shown, cmap=count_map, norm=counts)
+        image = draw_cells(ax, domain, shown, cmap=count_map, norm=counts)
         ax.set_title(f"{name} counts ({values.sum():,.0f})")
         label_axes(ax, domain)
     bar = fig.colorbar(image, ax=axes[:2], shrink=0.9, extend="min")
     bar.set_label("samples per cell (log scale)")
 
-    image = axes[2].pcolormesh(x, y, z, cmap=diff_map, norm=diff_norm)
+    image = draw_cells(axes[2], domain, z, cmap=diff_map, norm=diff_norm)
     axes[2].set_title("(O − E)/√E: red where too many samples")
     label_axes(axes[2], domain)
     cell = d["chi_square"]["outright_cell"]
     if d["chi_square"]["outright_samples"] and cell >= 0:
         i, j = cell % domain["nx"], cell // domain["nx"]
-        axes[2].plot((x[i] + x[i + 1]) / 2, (y[j] + y[j + 1]) / 2, "kx", markersize=10)
+        axes[2].plot((x[i] + x[i + 1]) / 2, (y[i][j] + y[i][j + 1]) / 2, "kx", markersize=10)
     bar = fig.colorbar(image, ax=axes[2], shrink=0.9, ticks=difference_ticks(limit))
     bar.ax.set_yticklabels([f"{t:g}" for t in difference_ticks(limit)])
     bar.set_label(f"standard deviations (linear within ±{LINEAR_SIGMAS:g}, log beyond)")
