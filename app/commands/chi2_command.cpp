@@ -50,7 +50,7 @@ struct Chi2Args {
   uint64_t seed = 1;
   std::string output;
   bool seedTable = false;
-  std::string cells = "grid";  // chi2::parseCellLayout
+  std::string cells = "equal";  // chi2::parseCellLayout
 };
 
 Vector3f parseVector(const std::string& text) {
@@ -244,7 +244,7 @@ void addChi2Command(CLI::App& app, const ProcessGroup& group) {
                   "'equal', of equal probability under the claimed pdf (a narrow lobe keeps as "
                   "many cells as a diffuse one; slower)")
       ->check(CLI::IsMember({"equal", "grid"}))
-      ->default_str("grid");
+      ->default_str("equal");
   cmd->add_flag("--seed-table", args->seedTable, "print the seed report's table next to ours");
   cmd->callback([args] {
     if (!args->seedTable && args->material.empty())

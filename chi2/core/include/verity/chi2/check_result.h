@@ -36,9 +36,10 @@ struct CheckOptions {
   // many as finding this target needs, at most maxSamples; beyond that it is INCONCLUSIVE.
   std::optional<DetectionTarget> detect;
   long long maxSamples = 100'000'000;
-  // The uniform grid, or cells of equal probability under the claimed pdf (partition.h):
-  // more power on narrow lobes, at more quadrature (TestOptions::cells).
-  CellLayout cells = CellLayout::Grid;
+  // Cells of equal probability under the claimed pdf (partition.h), so that a narrow lobe
+  // keeps its degrees of freedom; or the uniform grid, cheaper to integrate (Verity's own
+  // sweep uses it: TestOptions::cells).
+  CellLayout cells = CellLayout::EqualProbability;
 };
 
 struct CheckResult {

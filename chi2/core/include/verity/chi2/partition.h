@@ -18,7 +18,8 @@ enum class CellLayout {
   // Cells holding about 1/(nx·ny) of the claimed pdf's mass each: a narrow lobe keeps as many
   // cells, and degrees of freedom, as a diffuse one.
   EqualProbability,
-  // The uniform grid of the domain: the default, as it is much cheaper to integrate. Every
+  // The uniform grid of the domain: TestOptions' default (the sweep's), much cheaper to integrate.
+  // Every
   // equal-probability cell of a narrow lobe lies where a density evaluated in single
   // precision is a staircase (Phong with exponent 10⁴: steps of 6·10⁻⁴), which the per-cell
   // quadrature refines to its limits, where the grid meets it in four cells (measured: 0.15 s
