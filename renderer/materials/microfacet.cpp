@@ -1,5 +1,6 @@
 #include "materials/microfacet.h"
 
+#include <boost/math/special_functions/beta.hpp>
 #include <boost/math/special_functions/erf.hpp>
 
 namespace verity {
@@ -19,35 +20,38 @@ MicrofacetDistribution::MicrofacetDistribution(MicrofacetType type, float alpha,
       alpha_(std::max(std::isfinite(alpha) ? alpha : 1.0f, kMinAlpha)),
       sampling_(sampling) {}
 
-float MicrofacetDistribution::D(const Vector3f& m) const {
-  const float cos2 = m.z() * m.z();
+template <class T>
+T MicrofacetDistribution::D(const Vec3<T>& m) const {
+  const T cos2 = m.z() * m.z();
   if (m.z() <= 0) return 0;
-  const float a2 = alpha_ * alpha_;
-  const float sin2 = m.x() * m.x() + m.y() * m.y();
+  const T alpha = alpha_, a2 = alpha * alpha;
+  const T sin2 = m.x() * m.x() + m.y() * m.y();
   if (type_ == MicrofacetType::GGX) {
     // D = 1 / (π α² (sin²θ/α² + cos²θ)²), the form of Heitz 2018 eq. 1, which needs neither
     // tan θ nor cos⁴θ (Trowbridge and Reitz 1975; Walter et al. 2007 eq. 33).
-    const float t = sin2 / a2 + cos2;
-    return 1.0f / (kPi * a2 * t * t);
+    const T t = sin2 / a2 + cos2;
+    return T(1) / (T(kPi) * a2 * t * t);
   }
   // Beckmann: exp(−tan²θ/α²) / (π α² cos⁴θ) (Walter et al. 2007, eq. 25). When cos⁴θ
   // underflows the exponential has long been zero.
-  const float cos4 = cos2 * cos2;
-  if (cos4 < 1e-30f) return 0;
-  const float d = std::exp(-sin2 / (cos2 * a2)) / (kPi * a2 * cos4);
-  return std::isfinite(d) ? d : 0.0f;
+  const T cos4 = cos2 * cos2;
+  if (cos4 < T(1e-30)) return 0;
+  const T d = std::exp(-sin2 / (cos2 * a2)) / (T(kPi) * a2 * cos4);
+  return std::isfinite(d) ? d : T(0);
 }
 
-float MicrofacetDistribution::Lambda(const Vector3f& v) const {
-  const float cos2 = v.z() * v.z();
-  if (cos2 == 0) return kInfinity;
-  const float sin2 = v.x() * v.x() + v.y() * v.y();
+template <class T>
+T MicrofacetDistribution::Lambda(const Vec3<T>& v) const {
+  const T cos2 = v.z() * v.z();
+  if (cos2 == 0) return std::numeric_limits<T>::infinity();
+  const T sin2 = v.x() * v.x() + v.y() * v.y();
   // α²·tan²θ
-  const float a2t2 = alpha_ * alpha_ * sin2 / cos2;
-  if (!std::isfinite(a2t2)) return kInfinity;
+  const T alpha = alpha_;
+  const T a2t2 = alpha * alpha * sin2 / cos2;
+  if (!std::isfinite(a2t2)) return std::numeric_limits<T>::infinity();
   if (type_ == MicrofacetType::GGX) {
     // (−1 + √(1 + α²tan²θ)) / 2, rewritten without the cancellation near zero.
-    return a2t2 / (2.0f * (1.0f + std::sqrt(1.0f + a2t2)));
+    return a2t2 / (T(2) * (T(1) + std::sqrt(T(1) + a2t2)));
   }
   // Beckmann, exact (Walter et al. 2007, eq. 27 is its rational fit): with a = 1/(α tan θ),
   // Λ = (erf(a) − 1)/2 + exp(−a²)/(2a√π). Double precision limits the cancellation.
@@ -55,24 +59,28 @@ float MicrofacetDistribution::Lambda(const Vector3f& v) const {
   const double a = 1.0 / std::sqrt(static_cast<double>(a2t2));
   if (a > 8.0) return 0;  // Λ < 1e-29
   const double l = 0.5 * (std::exp(-a * a) / (a * kSqrtPi) - std::erfc(a));
-  return static_cast<float>(std::max(l, 0.0));
+  return static_cast<T>(std::max(l, 0.0));
 }
 
-float MicrofacetDistribution::G1(const Vector3f& v, const Vector3f& m) const {
+template <class T>
+T MicrofacetDistribution::G1(const Vec3<T>& v, const Vec3<T>& m) const {
   if (v.dot(m) * v.z() <= 0) return 0;
-  return 1.0f / (1.0f + Lambda(v));
+  return T(1) / (T(1) + Lambda(v));
 }
 
-float MicrofacetDistribution::G2(const Vector3f& wi, const Vector3f& wo, const Vector3f& m) const {
+template <class T>
+T MicrofacetDistribution::G2(const Vec3<T>& wi, const Vec3<T>& wo, const Vec3<T>& m) const {
   if (wi.dot(m) * wi.z() <= 0 || wo.dot(m) * wo.z() <= 0) return 0;
-  const float li = Lambda(wi), lo = Lambda(wo);
+  const T li = Lambda(wi), lo = Lambda(wo);
   if (!std::isfinite(li) || !std::isfinite(lo)) return 0;
-  if (wi.z() * wo.z() > 0) return 1.0f / (1.0f + li + lo);
+  if (wi.z() * wo.z() > 0) return T(1) / (T(1) + li + lo);
   // Transmission: a point at height-CDF value c is visible from above with probability
-  // c^Λ and from below with (1−c)^Λ; ∫ c^Λi (1−c)^Λo dc = B(1+Λi, 1+Λo).
-  const float b =
-      std::exp(std::lgamma(1.0f + li) + std::lgamma(1.0f + lo) - std::lgamma(2.0f + li + lo));
-  return std::isfinite(b) ? std::clamp(b, 0.0f, 1.0f) : 0.0f;
+  // c^Λ and from below with (1−c)^Λ; ∫ c^Λi (1−c)^Λo dc = B(1+Λi, 1+Λo). Boost's Beta,
+  // not exp(lgamma(a) + lgamma(b) − lgamma(a + b)): at a grazing direction (Λ = 3e16 at
+  // 90° and α = 4) that difference of two numbers near 1e18 lost every digit, and G2 read 1
+  // where it is 1e-33 (eval() of 1e15 one way round and 0 the other).
+  const T b = boost::math::beta(T(1) + li, T(1) + lo);
+  return std::isfinite(b) ? std::clamp(b, T(0), T(1)) : T(0);
 }
 
 Vector3f MicrofacetDistribution::sampleNormal(const Vector3f& wi, Point2f u) const {
@@ -160,13 +168,24 @@ Vector3f MicrofacetDistribution::sampleBeckmannVisible(const Vector3f& wi, const
   return m.allFinite() ? m : Vector3f::UnitZ();
 }
 
-float MicrofacetDistribution::pdfNormal(const Vector3f& wi, const Vector3f& m) const {
+template <class T>
+T MicrofacetDistribution::pdfNormal(const Vec3<T>& wi, const Vec3<T>& m) const {
   if (sampling_ == MicrofacetSampling::Normals || wi.z() <= 0) {
     if (sampling_ == MicrofacetSampling::Visible) return 0;
-    return D(m) * std::max(m.z(), 0.0f);
+    return D(m) * std::max(m.z(), T(0));
   }
-  const float pdf = G1(wi, m) * std::max(wi.dot(m), 0.0f) * D(m) / wi.z();
-  return std::isfinite(pdf) ? pdf : 0.0f;
+  const T pdf = G1(wi, m) * std::max(wi.dot(m), T(0)) * D(m) / wi.z();
+  return std::isfinite(pdf) ? pdf : T(0);
 }
+
+#define VERITY_MICROFACET_INSTANTIATE(T)                                                       \
+  template T MicrofacetDistribution::D(const Vec3<T>&) const;                                  \
+  template T MicrofacetDistribution::Lambda(const Vec3<T>&) const;                             \
+  template T MicrofacetDistribution::G1(const Vec3<T>&, const Vec3<T>&) const;                 \
+  template T MicrofacetDistribution::G2(const Vec3<T>&, const Vec3<T>&, const Vec3<T>&) const; \
+  template T MicrofacetDistribution::pdfNormal(const Vec3<T>&, const Vec3<T>&) const;
+VERITY_MICROFACET_INSTANTIATE(float)
+VERITY_MICROFACET_INSTANTIATE(double)
+#undef VERITY_MICROFACET_INSTANTIATE
 
 }  // namespace verity

@@ -26,22 +26,34 @@ class MicrofacetDistribution {
   float alpha() const { return alpha_; }
   MicrofacetSampling sampling() const { return sampling_; }
 
+  // The densities and masking terms are evaluated in the precision of their arguments:
+  // single precision, or double where a material evaluates a lobe narrower than single
+  // precision resolves (α near kMinAlpha, grazing directions; see RoughConductor::pdf).
+  // Instantiated for float and double.
+  template <class T>
+  using Vec3 = Eigen::Matrix<T, 3, 1>;
+
   // Density of microfacet normals per solid angle; zero below the horizon.
-  float D(const Vector3f& m) const;
+  template <class T>
+  T D(const Vec3<T>& m) const;
   // Smith's auxiliary function Λ(v) (infinite at v.z = 0); depends on |v.z| only.
-  float Lambda(const Vector3f& v) const;
+  template <class T>
+  T Lambda(const Vec3<T>& v) const;
   // Masking of direction v for microfacet m, with the χ+((v·m)/(v·n)) visibility test.
-  float G1(const Vector3f& v, const Vector3f& m) const;
+  template <class T>
+  T G1(const Vec3<T>& v, const Vec3<T>& m) const;
   // Height-correlated masking-shadowing (Heitz 2014, "Understanding the Masking-Shadowing
   // Function in Microfacet-Based BRDFs", §6.2): 1/(1 + Λ(wi) + Λ(wo)) when wi and wo lie
   // on the same side, B(1 + Λ(wi), 1 + Λ(wo)) (the Beta function) when they lie on
   // opposite sides (transmission).
-  float G2(const Vector3f& wi, const Vector3f& wo, const Vector3f& m) const;
+  template <class T>
+  T G2(const Vec3<T>& wi, const Vec3<T>& wo, const Vec3<T>& m) const;
 
   // Samples a microfacet normal (m.z > 0) for a direction wi with wi.z > 0.
   Vector3f sampleNormal(const Vector3f& wi, Point2f u) const;
   // Density of sampleNormal() producing m, per solid angle of normals.
-  float pdfNormal(const Vector3f& wi, const Vector3f& m) const;
+  template <class T>
+  T pdfNormal(const Vec3<T>& wi, const Vec3<T>& m) const;
 
  private:
   Vector3f sampleGGXVisible(const Vector3f& wi, const Point2f& u) const;

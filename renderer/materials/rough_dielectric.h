@@ -41,9 +41,10 @@ class RoughDielectric : public Material {
  private:
   // The generalised half vector of (wi, wo), oriented to +z, with the indices of both
   // sides; false when the pair cannot come from one microfacet.
+  // In double precision, from directions renormalised there (unitDouble, sample_util.h).
   struct Geometry {
-    Vector3f h;
-    float etaI, etaO;
+    Eigen::Vector3d wi, wo, h;
+    double etaI, etaO;
     bool reflection;
   };
   bool geometry(const Vector3f& wi, const Vector3f& wo, Geometry& g) const;

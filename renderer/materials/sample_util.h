@@ -23,6 +23,16 @@ inline std::optional<BsdfSample> makeSample(const Vector3f& wo, const Color3& f,
   return s;
 }
 
+// A direction renormalised in double precision, for the lobes narrower than single precision
+// resolves (a Phong exponent of 1e6 is 1e-3 rad wide, α = 1e-4 is 1e-4 rad): a float
+// direction near (−1, 0, 0) keeps its direction in its small components, but its x is
+// rounded to 6e-8, so that 1 − cos of its angle to a nearby direction, or the half vector
+// with a grazing wi, read in single precision is off by more than the lobe's width. The
+// double normalisation recovers x from the small components to 1e-16.
+inline Eigen::Vector3d unitDouble(const Vector3f& v) {
+  return v.cast<double>().normalized();
+}
+
 // Clamps a value computed from textures or formulas to a finite, non-negative colour.
 inline Color3 sanitize(const Color3& c) {
   return isFinite(c) ? c.max(0.0f) : Color3(Color3::Zero());
