@@ -52,6 +52,9 @@ struct BsdfCase {
   bool inside = false;   // wi below the surface (rough dielectric)
   bool rotated = false;  // shading normal normalize(0.25, 0.5, 1)
   bool quick = false;
+  // The sweep's grid, or cells of equal probability where a lobe is narrower than a grid
+  // cell or ends on a grid edge (TestOptions::cells).
+  CellLayout cells = CellLayout::Grid;
 };
 
 // An area light sampled from a reference point (see light_subjects.h).
