@@ -1,5 +1,5 @@
 # verity_discover_tests(TARGET [NAME name] [PREFIX prefix] [FILTER gtest-filter]
-#                       [WHOLE_SUITES suite...] LABELS label...):
+#                       [RESOURCE_LOCK lock] [WHOLE_SUITES suite...] LABELS label...):
 # registers a GoogleTest executable's tests (those FILTER selects) with CTest and gives every
 # discovered test all the labels. NAME tells apart several registrations of one target.
 # Labels are set after discovery because CMake 3.25's gtest discovery flattens list values
@@ -9,9 +9,10 @@
 # after it, which runs the suite whole: for a suite whose tests share renders that its
 # SetUpTestSuite makes once per process (registered test by test, each test's process made them
 # again). A failure names the test; a suite that selects no test (renamed, say) fails rather
-# than passing with nothing run.
+# than passing with nothing run. RESOURCE_LOCK keeps the tests from running at the same time
+# as any other test holding the same lock.
 function(verity_discover_tests target)
-  cmake_parse_arguments(ARG "" "NAME;PREFIX;FILTER" "WHOLE_SUITES;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "NAME;PREFIX;FILTER;RESOURCE_LOCK" "WHOLE_SUITES;LABELS" ${ARGN})
   if(NOT ARG_NAME)
     set(ARG_NAME ${target})
   endif()
@@ -37,8 +38,12 @@ function(verity_discover_tests target)
   list(JOIN ARG_LABELS ";" labels)
   set(file ${CMAKE_CURRENT_BINARY_DIR}/${ARG_NAME}_labels.cmake)
   # A target left unbuilt (a build of quick_tests alone) has no test list.
+  set(lock "")
+  if(ARG_RESOURCE_LOCK)
+    set(lock " RESOURCE_LOCK ${ARG_RESOURCE_LOCK}")
+  endif()
   file(WRITE ${file} "if(${ARG_NAME}_TESTS)\n"
-                     "  set_tests_properties(\${${ARG_NAME}_TESTS} PROPERTIES LABELS \"${labels}\")\n"
+                     "  set_tests_properties(\${${ARG_NAME}_TESTS} PROPERTIES LABELS \"${labels}\"${lock})\n"
                      "endif()\n")
   set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${file})
   if("quick" IN_LIST ARG_LABELS)
