@@ -56,37 +56,28 @@ std::vector<WarpCase> warpCases() {
 
 std::vector<MicrofacetCase> microfacetCases() {
   std::vector<MicrofacetCase> v;
-  int index = 0;
-  for (int t = 0; t < 2; ++t)
-    for (int s = 0; s < 2; ++s)
-      for (double a : kAlphas)
-        for (double th : kIncidences) {
-          MicrofacetCase c;
-          c.type = t ? MicrofacetType::GGX : MicrofacetType::Beckmann;
-          c.sampling = s ? MicrofacetSampling::Normals : MicrofacetSampling::Visible;
-          c.alpha = float(a);
-          c.incidence = th;
-          c.name =
-              fmt::format("{}_{}_a{}_t{}", kDistributions[t], kSamplings[s], token(a), token(th));
-          c.quick = index++ % 12 == 0;
-          v.push_back(c);
-        }
+  // Every distribution and sampling mode at each roughness and incidence, named with `prefix`.
+  auto sweep = [&](const std::string& prefix, const auto& alphas, const auto& incidences) {
+    for (int t = 0; t < 2; ++t)
+      for (int s = 0; s < 2; ++s)
+        for (double a : alphas)
+          for (double th : incidences) {
+            MicrofacetCase c;
+            c.type = t ? MicrofacetType::GGX : MicrofacetType::Beckmann;
+            c.sampling = s ? MicrofacetSampling::Normals : MicrofacetSampling::Visible;
+            c.alpha = float(a);
+            c.incidence = th;
+            c.name = fmt::format("{}{}_{}_a{}_t{}", prefix, kDistributions[t], kSamplings[s],
+                                 token(a), token(th));
+            v.push_back(c);
+          }
+  };
+  sweep("", kAlphas, kIncidences);
+  for (size_t i = 0; i < v.size(); i += 12) v[i].quick = true;
   // The corners of the accepted roughness (kAlphaRange: 1e-4 to 4) at normal, oblique,
   // grazing and exactly grazing incidence (docs/checks.md, "Every accepted value at its
   // extremes"), appended so that the quick subset stays as it was.
-  for (int t = 0; t < 2; ++t)
-    for (int s = 0; s < 2; ++s)
-      for (double a : {1e-4, 4.0})
-        for (double th : kCornerIncidences) {
-          MicrofacetCase c;
-          c.type = t ? MicrofacetType::GGX : MicrofacetType::Beckmann;
-          c.sampling = s ? MicrofacetSampling::Normals : MicrofacetSampling::Visible;
-          c.alpha = float(a);
-          c.incidence = th;
-          c.name = fmt::format("corner_{}_{}_a{}_t{}", kDistributions[t], kSamplings[s], token(a),
-                               token(th));
-          v.push_back(c);
-        }
+  sweep("corner_", std::initializer_list<double>{1e-4, 4.0}, kCornerIncidences);
   return v;
 }
 
