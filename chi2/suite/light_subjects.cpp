@@ -25,6 +25,14 @@ SceneFile loadLightScene(const LightSetup& s) {
   if (!s.obj.empty()) std::ofstream(dir / "mesh.obj") << s.obj;
   const std::string text =
       fmt::format(R"({{"camera": {{"resolution": [4, 4]}}, "surfaces": {}}})", s.surfaces);
+  // The loader reads the mesh before it returns; the folder goes either way.
+  struct RemovedOnExit {
+    fs::path dir;
+    ~RemovedOnExit() {
+      std::error_code ignored;
+      fs::remove_all(dir, ignored);
+    }
+  } removed{dir};
   SceneFile file = loadSceneText(text, dir / "light.json");
   if (file.scene->lights().size() != 1)
     throw std::invalid_argument(s.name + ": the surfaces must hold exactly one emitter");

@@ -45,7 +45,9 @@ Outcome run(const std::vector<std::string>& args) {
   const std::string file = (std::filesystem::temp_directory_path() /
                             ("verity_stderr_" + std::to_string(getpid()) + ".txt"))
                                .string();
-  return finish(spawn(args, file), file);
+  Outcome outcome = finish(spawn(args, file), file);
+  std::filesystem::remove(file);  // one per process: left behind, they pile up in the temp folder
+  return outcome;
 }
 
 }  // namespace verity::testing
