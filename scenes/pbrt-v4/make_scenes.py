@@ -53,11 +53,15 @@ BLACK = 'Material "diffuse" "rgb reflectance" [ 0 0 0 ]'
 
 # The box: x in [-1, 1], y in [0, 2], z in [-1, 1], open towards the camera (z = -1).
 # Every wall's front face looks into the box.
-BOX = (block(DIFFUSE, quad((-1, 0, -1), (-1, 0, 1), (1, 0, 1), (1, 0, -1)))  # floor, +y
-       + block(DIFFUSE, quad((-1, 2, -1), (1, 2, -1), (1, 2, 1), (-1, 2, 1)))  # ceiling, -y
-       + block(DIFFUSE, quad((-1, 0, 1), (-1, 2, 1), (1, 2, 1), (1, 0, 1)))  # back, -z
-       + block(DIFFUSE, quad((-1, 0, -1), (-1, 2, -1), (-1, 2, 1), (-1, 0, 1)))  # x=-1, +x
-       + block(DIFFUSE, quad((1, 0, -1), (1, 0, 1), (1, 2, 1), (1, 2, -1))))  # x=+1, -x
+def box(back=DIFFUSE):
+    return (block(DIFFUSE, quad((-1, 0, -1), (-1, 0, 1), (1, 0, 1), (1, 0, -1)))  # floor, +y
+            + block(DIFFUSE, quad((-1, 2, -1), (1, 2, -1), (1, 2, 1), (-1, 2, 1)))  # ceiling, -y
+            + block(back, quad((-1, 0, 1), (-1, 2, 1), (1, 2, 1), (1, 0, 1)))  # back, -z
+            + block(DIFFUSE, quad((-1, 0, -1), (-1, 2, -1), (-1, 2, 1), (-1, 0, 1)))  # x=-1, +x
+            + block(DIFFUSE, quad((1, 0, -1), (1, 0, 1), (1, 2, 1), (1, 2, -1))))  # x=+1, -x
+
+
+BOX = box()
 BOX_VIEW = "0 1 -3.4  0 1 0  0 1 0"
 CEILING_LIGHT = block(BLACK, quad((-0.4, 1.99, -0.4), (0.4, 1.99, -0.4), (0.4, 1.99, 0.4),
                                   (-0.4, 1.99, 0.4)),
@@ -66,14 +70,24 @@ CEILING_LIGHT = block(BLACK, quad((-0.4, 1.99, -0.4), (0.4, 1.99, -0.4), (0.4, 1
 
 scenes = {}
 
+AREA_BOX_SPHERES = (
+    block('Material "diffuse" "rgb reflectance" [ 0.8 0.8 0.8 ]', sphere(0.45),
+          translate="-0.45 0.45 0.2")
+    + block(f'Material "conductor" {CONDUCTOR} "float roughness" [ 0.2 ] '
+            '"bool remaproughness" false', sphere(0.4), translate="0.5 0.4 -0.2"))
+
 scenes["area-box"] = (
     header("area-box: a grey diffuse box lit by a one-sided quad light on its ceiling; a diffuse "
            "sphere and a rough conductor sphere (GGX alpha 0.2).", BOX_VIEW)
-    + BOX + CEILING_LIGHT
-    + block('Material "diffuse" "rgb reflectance" [ 0.8 0.8 0.8 ]', sphere(0.45),
-            translate="-0.45 0.45 0.2")
-    + block(f'Material "conductor" {CONDUCTOR} "float roughness" [ 0.2 ] '
-            '"bool remaproughness" false', sphere(0.4), translate="0.5 0.4 -0.2"))
+    + BOX + CEILING_LIGHT + AREA_BOX_SPHERES)
+
+# The referee's regression example: area-box with one material 1% brighter, the back wall's
+# reflectance 0.505 for 0.5.
+scenes["area-box-back-wall-1pct"] = (
+    header("area-box-back-wall-1pct: area-box with its back wall's reflectance 0.505 in place "
+           "of 0.5 (1% brighter), for the referee's regression example.", BOX_VIEW)
+    + box(back='Material "diffuse" "rgb reflectance" [ 0.505 0.505 0.505 ]') + CEILING_LIGHT
+    + AREA_BOX_SPHERES)
 
 scenes["delta-lights"] = (
     header("delta-lights: the grey box lit by a point light and a spot light; a rough "
