@@ -90,8 +90,16 @@ int run(const CompareArgs& args) {
     fmt::print("wrote {}\n", args.json);
   }
   if (!args.zImage.empty()) {
-    validation::writeZScoreImage(args.zImage, result);
-    fmt::print("wrote {}\n", args.zImage);
+    // Side A is the reference the sign convention (B below or above A) speaks of.
+    const std::string caption = result.sideA.renderSet
+                                    ? fmt::format("A: mean of {} renders", result.sideA.renders())
+                                    : std::string("A: mean image");
+    validation::writeZScoreImage(args.zImage, result, a->meanImage(), caption);
+    fmt::print(
+        "wrote {}: left A's mean image, right each tile's z over it in grey (blue: B below A, "
+        "red: B above A, full colour from |z| = z_c = {:.2f}), outlined: rejected by Holm, "
+        "hatched: untested\n",
+        args.zImage, validation::zScoreSaturation(result));
   }
   return result.differ ? kDiffer : kAgree;
 }
@@ -134,8 +142,9 @@ void addCompareCommand(CLI::App& app, const ProcessGroup& group) {
                   "Also write every tile's test to this JSON file (missing folders are created)")
       ->type_name("FILE");
   cmd->add_option("--z-image", args->zImage,
-                  "Write a PNG of each tile's z-score (blue: B below A, red: B above; black "
-                  "outline: rejected; missing folders are created)")
+                  "Write a PNG of A's mean image beside each tile's z-score over it, with a "
+                  "colour bar (blue: B below A, red: B above; outlined: rejected; missing "
+                  "folders are created)")
       ->type_name("FILE.png");
   cmd->callback([args] { throw CLI::RuntimeError(runReportingErrors(*args)); });
 }

@@ -20,6 +20,9 @@
 #include "integrators/integrator_settings.h"
 #include "loader/scene_loader.h"
 #include "render/renderer.h"
+#include "validation/compare/image_comparison.h"
+#include "validation/compare/side_loading.h"
+#include "validation/compare/z_score_image.h"
 
 namespace verity::validation {
 namespace {
@@ -175,16 +178,30 @@ TEST_F(CompareSets, OnePercentChangeInOneMaterialIsRejected) {
   // The summary lists the rejected tiles, with the channels rejected.
   EXPECT_NE(o.out.find("rejected tiles (x,y channels): (2,0 "), std::string::npos) << o.text();
   EXPECT_EQ(o.out.find("(0,0 "), std::string::npos) << o.text();
-  // The z-score picture: the image enlarged 8 times (to 256 pixels), red (B above A) inside
-  // the right half's tiles.
+  // The z-score picture is side A's mean image with the z-scores over it: the PNG is the
+  // picture drawn from the same comparison and A's mean (not B's), red (B above A) and
+  // outlined inside the right half's tile (3, 1), not outlined in the left half's (0, 1).
+  EXPECT_NE(o.out.find("z_c = "), std::string::npos) << o.text();
+  std::vector<fs::path> filesA(a_.begin(), a_.end()), filesB(changed_.begin(), changed_.end());
+  const auto a = loadSide(filesA, "A", ""), b = loadSide(filesB, "B", "");
+  const ComparisonResult result = compareSides(*a, *b, {8});
+  const ZScorePicture picture =
+      drawZScorePicture(result, a->meanImage(), fmt::format("A: mean of {} renders", kRenders));
   int w = 0, h = 0, n = 0;
   unsigned char* pixels = stbi_load(png.string().c_str(), &w, &h, &n, 3);
   ASSERT_NE(pixels, nullptr);
-  EXPECT_EQ(w, 256);
-  EXPECT_EQ(h, 256);
-  const unsigned char* inside = pixels + 3 * (8 * 12 * 256 + 8 * 28);  // tile (3, 1), inside
-  EXPECT_GT(inside[0], inside[2] + 60) << int(inside[0]) << " " << int(inside[2]);
+  ASSERT_EQ(w, picture.canvas.width());
+  ASSERT_EQ(h, picture.canvas.height());
+  EXPECT_TRUE(std::equal(picture.canvas.pixels().begin(), picture.canvas.pixels().end(), pixels));
   stbi_image_free(pixels);
+  ASSERT_EQ(picture.scale, 8);  // 32 pixels enlarged to 256
+  const auto tile = [&](int tx, int ty, int dx, int dy) {
+    return picture.canvas.at(picture.zPanel.x0 + 64 * tx + dx, picture.zPanel.y0 + 64 * ty + dy);
+  };
+  const Rgb8 inside = tile(3, 1, 32, 32);
+  EXPECT_GT(inside[0], inside[2] + 30) << int(inside[0]) << " " << int(inside[2]);
+  EXPECT_EQ(tile(3, 1, 0, 0), (Rgb8{0, 0, 0}));
+  EXPECT_NE(tile(0, 1, 0, 0), (Rgb8{0, 0, 0}));
 }
 
 }  // namespace

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "film/image_io.h"
+
 namespace verity::validation {
 
 // What a side was made of, for the report.
@@ -38,6 +40,10 @@ class ComparisonSide {
   virtual std::vector<std::array<MeanEstimate, kChannels>> tileEstimates(
       const TileGrid& grid, const std::vector<char>& usable) const = 0;
   virtual SideSummary summary() const = 0;
+  // What the side estimates per pixel, for showing under the z-scores (z_score_image.h):
+  // planes R, G and B, linear. A set's pixel is the mean of its renders (NaN where a render
+  // is not finite); an image with variances gives its means.
+  virtual ImageChannels meanImage() const = 0;
   // Each file's label and string attributes (for warnings: renders sharing a seed).
   virtual std::vector<std::pair<std::string, std::map<std::string, std::string>>> attributes()
       const = 0;

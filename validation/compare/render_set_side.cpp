@@ -120,6 +120,22 @@ std::vector<std::array<MeanEstimate, kChannels>> RenderSetSide::tileEstimates(
   return estimates;
 }
 
+ImageChannels RenderSetSide::meanImage() const {
+  ImageChannels mean;
+  mean.width = width();
+  mean.height = height();
+  for (const char* name : kChannelNames) {
+    std::vector<float>& sum = mean.planes[name];
+    sum.assign(size_t(width()) * height(), 0.0f);
+    for (const ImageChannels& render : renders_) {
+      const std::vector<float>& plane = render.planes.at(name);
+      for (size_t i = 0; i < sum.size(); ++i) sum[i] += plane[i];
+    }
+    for (float& v : sum) v /= renders_.size();
+  }
+  return mean;
+}
+
 SideSummary RenderSetSide::summary() const {
   SideSummary s;
   s.renderSet = true;

@@ -39,6 +39,7 @@ class RenderSetSide : public ComparisonSide {
   std::vector<std::array<MeanEstimate, kChannels>> tileEstimates(
       const TileGrid& grid, const std::vector<char>& usable) const override;
   SideSummary summary() const override;
+  ImageChannels meanImage() const override;
   std::vector<std::pair<std::string, std::map<std::string, std::string>>> attributes()
       const override;
 

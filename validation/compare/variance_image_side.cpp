@@ -21,6 +21,15 @@ std::vector<std::array<MeanEstimate, kChannels>> VarianceImageSide::tileEstimate
   return tiles;
 }
 
+ImageChannels VarianceImageSide::meanImage() const {
+  ImageChannels image;
+  image.width = stats_.width;
+  image.height = stats_.height;
+  for (int c = 0; c < kChannels; ++c)
+    image.planes[kChannelNames[c]].assign(stats_.mean[c].begin(), stats_.mean[c].end());
+  return image;
+}
+
 SideSummary VarianceImageSide::summary() const {
   SideSummary s;
   s.files = {stats_.label};
