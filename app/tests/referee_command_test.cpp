@@ -240,3 +240,63 @@ INSTANTIATE_TEST_SUITE_P(Scenes, RefereeOnVerity,
 
 }  // namespace
 }  // namespace verity
+
+namespace verity {
+namespace {
+
+// `verity compare --margin` runs the referee's equivalence test on sets already rendered: exit
+// status 0 EQUIVALENT, 1 DIFFER, 3 neither; the JSON says EQUIVALENT or "not shown".
+class CompareMargin : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = testing::freshTestDirectory("verity_compare_margin_"); }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  // `count` renders of the fake renderer, seeds first, first + 2, ...
+  std::vector<std::string> renders(const std::string& name, int count, uint64_t first,
+                                   const std::string& extra = "") {
+    std::vector<std::string> files;
+    for (int i = 0; i < count; ++i) {
+      files.push_back((dir_ / (name + std::to_string(i) + ".exr")).string());
+      std::vector<std::string> args = {FAKE_RENDERER, "--seed", std::to_string(first + 2 * i),
+                                       "--out", files.back()};
+      std::istringstream words(extra);
+      for (std::string w; words >> w;) args.push_back(w);
+      EXPECT_EQ(testing::run(args).status, 0);
+    }
+    return files;
+  }
+  testing::Outcome compare(const std::vector<std::string>& a, const std::vector<std::string>& b,
+                           std::vector<std::string> extra) {
+    std::vector<std::string> args = {"compare", "--tile", "4", "--alpha", "0.05"};
+    args.push_back("-a");
+    args.insert(args.end(), a.begin(), a.end());
+    args.push_back("-b");
+    args.insert(args.end(), b.begin(), b.end());
+    args.insert(args.end(), extra.begin(), extra.end());
+    return verity(args);
+  }
+  std::filesystem::path dir_;
+};
+
+TEST_F(CompareMargin, SaysEquivalentDifferOrNeither) {
+  const auto a = renders("a", 32, 0), b = renders("b", 32, 1);
+  const std::string json = (dir_ / "report.json").string();
+  EXPECT_EQ(compare(a, b, {"--margin", "0.1", "-o", json}).status, 0);
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(json));
+  EXPECT_EQ(j["equivalence"]["verdict"], "EQUIVALENT");
+  EXPECT_EQ(j["equivalence"]["tests"].size(), 12u);
+  EXPECT_EQ(compare(a, renders("biased", 32, 1, "--bias 0.2"), {"--margin", "0.1"}).status, 1);
+  const auto few = std::vector<std::string>(a.begin(), a.begin() + 3);
+  const testing::Outcome neither =
+      compare(few, std::vector<std::string>(b.begin(), b.begin() + 3), {"--margin", "0.01"});
+  EXPECT_EQ(neither.status, 3);
+  // Without --margin, compare's statuses are unchanged: 0 agree.
+  EXPECT_EQ(compare(few, std::vector<std::string>(b.begin(), b.begin() + 3), {}).status, 0);
+  const testing::Outcome refused =
+      verity({"compare", a[0], a[1], "--margin", "0.05", "--alpha", "0.6"});
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.stderrText.find("--alpha: with --margin"), std::string::npos)
+      << refused.stderrText;
+}
+
+}  // namespace
+}  // namespace verity
