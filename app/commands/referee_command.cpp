@@ -195,7 +195,6 @@ JunitCase junitCase(const std::string& name, const RefereeOutcome& o) {
   c.name = name;
   c.seconds = o.seconds;
   c.details = o.summary;
-  const std::string verdict = o.json.value("verdict", std::string("ERROR"));
   if (o.status == kStatusDiffer) {
     c.outcome = JunitCase::Outcome::Failure;
     c.type = "DIFFER";

@@ -56,6 +56,26 @@ TEST(Referee, OptionsOutOfRangeNameTheOption) {
   EXPECT_EQ(refused([](RefereeOptions&) {}), "");
 }
 
+// A time budget ends the rounds: INCONCLUSIVE after the first round, saying why, naming the
+// undecided tests and the margin that could have been claimed.
+TEST(Referee, MaxSecondsEndsTheRoundsInconclusive) {
+  testing::FakeRenderSource source({}, {});
+  RefereeOptions options;
+  options.tileSize = 4;
+  options.maxRenders = 256;
+  options.maxSeconds = 1e-9;
+  const RefereeResult r = referee(source, options);
+  EXPECT_EQ(r.verdictName(), "INCONCLUSIVE");
+  EXPECT_EQ(r.rounds.size(), 1u);
+  EXPECT_NE(r.stopReason.find("--max-seconds"), std::string::npos) << r.stopReason;
+  EXPECT_FALSE(r.undecided.empty());
+  EXPECT_GT(r.claimableMargin, options.margin);
+  // The claimable margin is where every test passes at the last look's level.
+  const double level = r.rounds.back().decision.equivalenceLevel;
+  EXPECT_EQ(decideRound(r.comparison, std::min(0.999, r.claimableMargin), level).verdict,
+            Verdict::Equivalent);
+}
+
 TEST(CommandTemplate, PlaceholdersAreCheckedAndFilledShellQuoted) {
   EXPECT_NE(errorOf([] { checkCommandTemplate("render --out {out}", "--a", 16); }).find("{seed}"),
             std::string::npos);
