@@ -122,7 +122,9 @@ RefereeEntry prepareEntry(const ManifestEntry& given, const RefereeArgs& args, b
         fmt::format("saves side A's renders, and with {} there are none", baselineName));
   if (!given.a.empty()) checkCommandTemplate(given.a, aName, e.spp);
   if (!given.b.empty()) checkCommandTemplate(given.b, bName, e.spp);
-  if (e.spp && !hasPlaceholder(given.a, "spp") && !hasPlaceholder(given.b, "spp"))
+  // A manifest's --spp serves the entries that have {spp}; one given to this entry must be used.
+  const bool sppForThisEntry = given.spp || (!inManifest && e.spp);
+  if (sppForThisEntry && !hasPlaceholder(given.a, "spp") && !hasPlaceholder(given.b, "spp"))
     throw VerityError("", inManifest ? "spp" : "--spp",
                       "no render command has the placeholder {spp} to receive it");
   e.scene = !given.scene.empty() ? given.scene : !given.a.empty() ? given.a : given.b;
