@@ -209,7 +209,8 @@ JunitCase junitCase(const std::string& name, const RefereeOutcome& o) {
   } else if (o.status == kBadInputStatus) {
     c.outcome = JunitCase::Outcome::Error;
     c.type = "bad input";
-    c.message = o.json.value("error", std::string());
+    const std::string error = o.json.value("error", std::string());
+    c.message = error.substr(0, error.find('\n'));  // the details hold the rest
   }
   return c;
 }

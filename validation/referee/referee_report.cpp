@@ -19,7 +19,7 @@ std::string testName(const TileTest& t) {
 }
 
 std::string marginText(double m) {
-  return std::isfinite(m) ? fmt::format("{:.4g}", m) : std::string("none below 1");
+  return std::isfinite(m) ? fmt::format("±{:.4g}", m) : std::string("none below 1");
 }
 
 }  // namespace
@@ -125,7 +125,7 @@ std::string refereeSummary(const RefereeResult& r, const RefereeOptions& o) {
     for (size_t k = 0; k < std::min<size_t>(r.undecided.size(), 8); ++k)
       s += " " + testName(r.comparison.tests[r.undecided[k]]) + ",";
     if (r.undecided.size() > 8) s += " ...";
-    s += fmt::format("\n  the margin that could have been claimed: ±{}\n",
+    s += fmt::format("\n  the margin that could have been claimed: {}\n",
                      marginText(r.claimableMargin));
   }
   return s + r.verdictName() + "\n";
