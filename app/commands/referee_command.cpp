@@ -369,8 +369,11 @@ void addRefereeCommand(CLI::App& app, const ProcessGroup& group) {
                   "How the level is spent over the rounds: pocock or obrien-fleming (Lan and "
                   "DeMets 1983)");
   cmd->add_option("--jobs,-j", args->jobs, "Renders run at once")->check(wholeNumber(1, 1024));
-  cmd->add_option("--spp", args->spp, "The value of {spp} in the commands")->check(wholeNumber(1));
-  addSeedOption(cmd, args->seed, "Render i of A has seed SEED + 2i, of B SEED + 2i + 1");
+  cmd->add_option("--spp", args->spp, "The value of {spp} in the commands")
+      ->default_str("none")
+      ->check(wholeNumber(1));
+  addSeedOption(cmd, args->seed, "Render i of A has seed SEED + 2i, of B SEED + 2i + 1")
+      ->default_str("0");
   cmd->add_option("--layer", args->layer, "Read R, G, B from this EXR layer")->type_name("NAME");
   cmd->add_option("--json", args->json, "Write everything (rounds, tiles) to this JSON file")
       ->type_name("FILE");
