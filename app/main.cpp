@@ -9,6 +9,7 @@
 #include "commands/chi2_command.h"
 #include "commands/compare_command.h"
 #include "commands/error_command.h"
+#include "commands/referee_command.h"
 #include "commands/reference_command.h"
 #include "commands/render_command.h"
 #include "commands/report_command.h"
@@ -53,6 +54,7 @@ int main(int argc, char** argv) {
   verity::addRenderCommand(app, group);
   verity::addBenchCommand(app, group);
   verity::addCompareCommand(app, group);
+  verity::addRefereeCommand(app, group);
   verity::addErrorCommand(app, group);
   verity::addReferenceCommand(app, group);
   verity::addStudyCommand(app, group);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
+#include <optional>
 
 #include "cli/exit_status.h"
 #include "cli/number_options.h"
@@ -16,18 +17,21 @@
 #include "validation/compare/image_comparison.h"
 #include "validation/compare/side_loading.h"
 #include "validation/compare/z_score_image.h"
+#include "validation/referee/referee_report.h"
+#include "validation/referee/round_decision.h"
 
 namespace verity {
 
 namespace {
 
-constexpr int kAgree = 0, kDiffer = 1;
+constexpr int kAgree = 0, kDiffer = 1, kNotShownEquivalent = 3;
 
 struct CompareArgs {
   std::vector<std::string> images;  // A.exr B.exr
   std::vector<std::string> a, b;    // -a A1.exr ..., -b B1.exr ...
   int tile = 16;
   double alpha = 0.01;
+  double margin = 0;  // 0: no equivalence test
   std::string layer;
   std::string json;
   std::string zImage;
@@ -64,6 +68,11 @@ int run(const CompareArgs& args) {
   options.tileSize = args.tile;
   options.alpha = args.alpha;
   validation::checkComparisonOptions(options);
+  if (args.margin > 0 && args.alpha >= 0.5)
+    throw VerityError("", "--alpha",
+                      fmt::format("with --margin, two one-sided tests need a level below 0.5, "
+                                  "not {}",
+                                  args.alpha));
   // Outputs are checked before any work, so that a verdict is never followed by an error.
   if (!args.zImage.empty()) {
     std::string extension = std::filesystem::path(args.zImage).extension().string();
@@ -83,9 +92,17 @@ int run(const CompareArgs& args) {
   const auto b = validation::loadSide(filesB, "B", args.layer);
   const validation::ComparisonResult result = validation::compareSides(*a, *b, options);
   fmt::print("{}", validation::comparisonSummary(result));
+  nlohmann::json json = validation::comparisonJson(result);
+  // With --margin, the referee's equivalence test at the same level (one look: no spending).
+  std::optional<validation::RoundDecision> equivalence;
+  if (args.margin > 0) {
+    equivalence = validation::decideRound(result, args.margin, args.alpha);
+    fmt::print("{}", validation::equivalenceSummary(result, *equivalence, args.margin));
+    json["equivalence"] = validation::equivalenceJson(result, *equivalence, args.margin);
+  }
   if (!args.json.empty()) {
     std::ofstream out(args.json);
-    out << validation::comparisonJson(result).dump(2) << "\n";
+    out << json.dump(2) << "\n";
     if (!out) throw VerityError(args.json, "", "cannot write the JSON report");
     fmt::print("wrote {}\n", args.json);
   }
@@ -101,7 +118,10 @@ int run(const CompareArgs& args) {
         "hatched: untested\n",
         args.zImage, validation::zScoreSaturation(result));
   }
-  return result.differ ? kDiffer : kAgree;
+  if (result.differ) return kDiffer;
+  if (equivalence && equivalence->verdict != validation::Verdict::Equivalent)
+    return kNotShownEquivalent;
+  return kAgree;
 }
 
 int runReportingErrors(const CompareArgs& args) {
@@ -133,6 +153,11 @@ void addCompareCommand(CLI::App& app, const ProcessGroup& group) {
   cmd->add_option("--tile", args->tile, "Tile size in pixels")->check(wholeNumber(1));
   cmd->add_option("--alpha", args->alpha,
                   "Family-wise significance level of the Holm decision, above 0 and below 1")
+      ->check(realNumber(0, false, 1, false));
+  cmd->add_option("--margin", args->margin,
+                  "Also test equivalence within this relative margin of A (two one-sided tests "
+                  "per tile at --alpha); exit status 3 when the sides neither differ nor are "
+                  "shown equivalent")
       ->check(realNumber(0, false, 1, false));
   cmd->add_option("--layer", args->layer,
                   "Read a set's R, G, B from this EXR layer (LAYER.R, LAYER.G, LAYER.B) when "

@@ -129,7 +129,8 @@ ComparisonResult compareSides(const ComparisonSide& a, const ComparisonSide& b,
                                   "least {} samples: render with more samples per pixel; in a "
                                   "set, finite values in every render)",
                                   b.label(), options.minSamples));
-  static_cast<TileDecision&>(r) = decideTiles(r.tests, options.alpha, options.power);
+  static_cast<TileDecision&>(r) =
+      decideTiles(r.tests, options.alpha, options.power, options.detectableBias);
   return r;
 }
 

@@ -41,6 +41,9 @@ struct ComparisonOptions {
   double alpha = 0.01;  // family-wise level of the Holm decision
   int minSamples = 2;   // per pixel, in an image with variances
   double power = 0.9;   // for the detectable-bias figures
+  // The detectable-bias figures (NaN without): off for a sequential test's intermediate looks,
+  // whose cost they dominate.
+  bool detectableBias = true;
 };
 
 struct ComparisonResult : TileDecision {

@@ -32,7 +32,9 @@ PowerTerm powerTerm(const TileTest& t, int group) {
 
 }  // namespace
 
-TileDecision decideTiles(std::vector<TileTest>& tests, double alpha, double power) {
+TileDecision decideTiles(std::vector<TileTest>& tests, double alpha, double power,
+                         bool detectableBias) {
+  constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
   if (tests.empty()) throw std::invalid_argument("decideTiles: no test to decide");
   TileDecision d;
   const int m = static_cast<int>(tests.size());
@@ -42,8 +44,10 @@ TileDecision decideTiles(std::vector<TileTest>& tests, double alpha, double powe
     t.welch = welchTest(t.pooled.a, t.pooled.b);
     t.relativeDifference = relativeDifference(t.pooled.a.mean, t.pooled.b.mean);
     t.z = zScore(t);
-    t.detectableBias =
-        t.welch.deterministic ? 0.0 : detectableRelativeBias({powerTerm(t, 0)}, m, alpha, power);
+    t.detectableBias = !detectableBias ? kNotComputed
+                       : t.welch.deterministic
+                           ? 0.0
+                           : detectableRelativeBias({powerTerm(t, 0)}, m, alpha, power);
     d.deterministicTests += t.welch.deterministic;
     p[i] = t.welch.p;
   }
@@ -70,6 +74,10 @@ TileDecision decideTiles(std::vector<TileTest>& tests, double alpha, double powe
   d.uniformityP = std::min(1.0, channelsTested * smallestKs);
 
   // Tests of one channel are independent (disjoint pixels): the channel is the power group.
+  if (!detectableBias) {
+    d.detectableBias = kNotComputed;
+    return d;
+  }
   std::vector<PowerTerm> terms;
   for (const TileTest& t : tests) terms.push_back(powerTerm(t, t.channel));
   d.detectableBias = detectableRelativeBias(terms, m, alpha, power);

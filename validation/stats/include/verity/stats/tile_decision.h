@@ -56,6 +56,9 @@ struct TileDecision {
 // Fills each test's Welch result, z, relative difference, detectable bias, adjusted p and
 // rejection from its `pooled` estimates, and decides the family at level `alpha` (in (0, 1));
 // `power` in (0, 1). Requires at least one test (std::invalid_argument otherwise).
-TileDecision decideTiles(std::vector<TileTest>& tests, double alpha, double power);
+// Without `detectableBias` the power figures (bisections, most of the cost of a small family)
+// are left NaN: for a sequential test's intermediate looks.
+TileDecision decideTiles(std::vector<TileTest>& tests, double alpha, double power,
+                         bool detectableBias = true);
 
 }  // namespace verity::validation

@@ -1,0 +1,302 @@
+// `verity referee` as users run it: through command templates, on the fake renderer
+// (validation/referee/tests/fake_renderer.cpp) and on Verity's own integrators; its exit
+// statuses, reports (JSON, JUnit, z-images), baselines and manifests, and every refusal
+// (exit status 2, naming what it is about, before any render).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "test_directory.h"
+#include "testing/child_process.h"
+
+namespace verity {
+namespace {
+
+std::string fake(const std::string& extra = "") {
+  return std::string(FAKE_RENDERER) + " --seed {seed} --out {out}" + extra;
+}
+
+std::string readText(const std::filesystem::path& file) {
+  std::stringstream s;
+  s << std::ifstream(file).rdbuf();
+  return s.str();
+}
+
+testing::Outcome verity(std::vector<std::string> args) {
+  args.insert(args.begin(), VERITY_BINARY);
+  return testing::run(args);
+}
+
+class RefereeCommand : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = testing::freshTestDirectory("verity_referee_"); }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  // The fake renderer's small images: tiles of 4 pixels, a 5% margin at level 0.05.
+  // These options, unless `args` gives them.
+  std::vector<std::string> referee(std::vector<std::string> args) {
+    const std::pair<std::string, std::string> defaults[] = {
+        {"--tile", "4"},
+        {"--margin", "0.05"},
+        {"--alpha", "0.05"},
+        {"--max-renders", "128"},
+        {"--work-dir", (dir_ / "work").string()}};
+    args.insert(args.begin(), "referee");
+    for (const auto& [option, value] : defaults)
+      if (std::find(args.begin(), args.end(), option) == args.end())
+        args.insert(args.end(), {option, value});
+    return args;
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::filesystem::path dir_;
+};
+
+TEST_F(RefereeCommand, ExitStatusIsTheDecision) {
+  EXPECT_EQ(verity(referee({"--a", fake(), "--b", fake()})).status, 0);
+  EXPECT_EQ(verity(referee({"--a", fake(), "--b", fake(" --bias 0.2")})).status, 1);
+  // Four renders of very noisy images decide nothing.
+  const testing::Outcome undecided =
+      verity(referee({"--a", fake(" --noise 3"), "--b", fake(" --noise 3"), "--max-renders", "4"}));
+  EXPECT_EQ(undecided.status, 3) << undecided.stderrText;
+}
+
+TEST_F(RefereeCommand, JsonCarriesTheRoundsAndTiles) {
+  const std::string json = path("out/report.json");
+  ASSERT_EQ(verity(referee({"--a", fake(), "--b", fake(" --bias 0.2"), "--json", json,
+                            "--renderer-version", "fake 1"}))
+                .status,
+            1);
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(json));
+  ASSERT_EQ(j["entries"].size(), 1u);
+  const nlohmann::json& e = j["entries"][0];
+  EXPECT_EQ(e["verdict"], "DIFFER");
+  EXPECT_EQ(e["renderer_version"], "fake 1");
+  ASSERT_FALSE(e["rounds"].empty());
+  EXPECT_EQ(e["rounds"].back()["decision"], "DIFFER");
+  EXPECT_GE(e["rounds"][0]["renders_b"].get<int>(), 4);
+  EXPECT_TRUE(e["rounds"][0].contains("seconds"));
+  EXPECT_EQ(e["comparison"]["tile_tests"].size(), 12u);  // 4 tiles, 3 channels
+  EXPECT_EQ(e["equivalence"]["tests"].size(), 12u);
+  EXPECT_EQ(j["exit_status"], 1);
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "work") && !std::filesystem::is_empty(dir_ / "work"));
+}
+
+TEST_F(RefereeCommand, BaselineIsSavedThenDecidesTheNewSideAlone) {
+  const std::string baseline = path("base/fake.json");
+  const testing::Outcome saved = verity(referee(
+      {"--a", fake(), "--save-baseline", baseline, "--max-renders", "64", "--scene", "fake"}));
+  ASSERT_EQ(saved.status, 0) << saved.stderrText;
+  const nlohmann::json b = nlohmann::json::parse(std::ifstream(baseline));
+  EXPECT_EQ(b["renders"], 64);
+  EXPECT_EQ(b["scene"], "fake");
+  EXPECT_EQ(b["tiles"].size(), 4u);
+  EXPECT_EQ(verity(referee({"--baseline", baseline, "--b", fake(), "--scene", "fake"})).status, 0);
+  EXPECT_EQ(verity(referee({"--baseline", baseline, "--b", fake(" --bias 0.2 --biased-tiles 1"),
+                            "--scene", "fake"}))
+                .status,
+            1);
+  // Another scene, tile size or image size is refused.
+  testing::Outcome o = verity(referee({"--baseline", baseline, "--b", fake(), "--scene", "other"}));
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.stderrText.find(baseline + ": /scene: the baseline is of scene \"fake\""),
+            std::string::npos)
+      << o.stderrText;
+  o = verity(referee({"--baseline", baseline, "--b", fake(), "--scene", "fake", "--tile", "2"}));
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.stderrText.find("/tile_size"), std::string::npos) << o.stderrText;
+  o = verity(referee({"--baseline", baseline, "--b", fake(" --size 8 4"), "--scene", "fake"}));
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.stderrText.find("b-1.exr: 8x4 pixels, while side A (the baseline) has 8x8"),
+            std::string::npos)
+      << o.stderrText;
+}
+
+TEST_F(RefereeCommand, ManifestRunsASuiteWithJunitAndZImagesPerEntry) {
+  const std::string manifest = path("suite.json");
+  std::ofstream(manifest) << nlohmann::json{
+      {"entries",
+       {{{"name", "same"}, {"a", fake()}, {"b", fake()}},
+        {{"name", "biased"}, {"a", fake()}, {"b", fake(" --bias 0.2")}},
+        {{"name", "noisy"},
+         {"a", fake(" --noise 3")},
+         {"b", fake(" --noise 3")},
+         {"budget", {{"max_renders", 4}}}}}}};
+  const std::string junit = path("out/junit.xml");
+  const testing::Outcome o =
+      verity(referee({"--manifest", manifest, "--junit", junit, "--z-image", path("z/z.png"),
+                      "--json", path("suite-report.json")}));
+  EXPECT_EQ(o.status, 1) << o.stderrText;  // DIFFER outranks INCONCLUSIVE
+  const std::string xml = readText(junit);
+  EXPECT_NE(xml.find("<testsuite name=\"verity referee\" tests=\"3\" failures=\"1\" errors=\"1\""),
+            std::string::npos)
+      << xml;
+  EXPECT_NE(xml.find("<testcase name=\"same\""), std::string::npos);
+  EXPECT_NE(xml.find("<failure type=\"DIFFER\""), std::string::npos);
+  EXPECT_NE(xml.find("<error type=\"INCONCLUSIVE\""), std::string::npos);
+  for (const char* name : {"z-same.png", "z-biased.png", "z-noisy.png"})
+    EXPECT_TRUE(std::filesystem::exists(dir_ / "z" / name)) << name;
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(path("suite-report.json")));
+  EXPECT_EQ(j["entries"].size(), 3u);
+  EXPECT_EQ(j["entries"][2]["verdict"], "INCONCLUSIVE");
+  EXPECT_TRUE(j["entries"][2].contains("claimable_margin"));
+  EXPECT_FALSE(j["entries"][2]["undecided"].empty());
+}
+
+// Every refusal: exit status 2, one `verity: error:` naming the option, file or command, and
+// no render started (the work folder stays empty).
+TEST_F(RefereeCommand, BadInputIsRefusedBeforeAnyRender) {
+  const std::string missing = path("missing.json");
+  const std::string aFile = path("a-file");
+  std::ofstream(aFile) << "not a folder";
+  const std::string manifest = path("bad-manifest.json");
+  std::ofstream(manifest) << R"({"entries": [{"name": "x", "a": "r {seed} {out}",
+                                 "b": "r {seed} {out}", "budget": {"max_render": 9}}]})";
+  struct Case {
+    std::vector<std::string> args;
+    std::string names;
+  };
+  const Case cases[] = {
+      {{"--a", "r --out {out}", "--b", fake()}, "--a: \"r --out {out}\" has no {seed}"},
+      {{"--a", fake(), "--b", "r --seed {seed}"}, "--b: "},
+      {{"--a", fake()}, "--b: side B needs a render command"},
+      {{"--b", fake()}, "--a: side A needs a render command or --baseline"},
+      {{"--a", fake(), "--baseline", missing, "--b", fake()}, "--baseline: "},
+      {{"--baseline", missing, "--b", fake()}, missing + ": cannot read the baseline"},
+      {{"--a", fake(), "--b", fake(), "--spp", "4"}, "--spp: no render command has"},
+      {{"--a", fake(" -n {spp}"), "--b", fake()}, "--a: "},
+      {{"--a", fake(), "--b", fake(), "--z-image", path("z.jpg")}, "--z-image: "},
+      {{"--a", fake(), "--b", fake(), "--json", aFile + "/r.json"}, "--json: cannot create"},
+      {{"--a", fake(), "--b", fake(), "--junit", aFile + "/j.xml"}, "--junit: cannot create"},
+      {{"--a", fake(), "--b", fake(), "--save-baseline", aFile + "/b.json"},
+       "--save-baseline: cannot create"},
+      {{"--baseline", dir_.string(), "--b", fake()}, dir_.string() + ": cannot read the baseline"},
+      {{"--a", fake(), "--b", fake(), "--margin", "0"}, "--margin"},
+      {{"--a", fake(), "--b", fake(), "--max-renders", "2", "--initial-renders", "4"},
+       "--max-renders: 2 is below --initial-renders 4"},
+      {{"--a", fake(), "--b", fake(), "--spending", "linear"}, "--spending: "},
+      {{"--manifest", manifest}, "/entries/0/budget/max_render: unknown key"},
+      {{"--manifest", manifest, "--a", fake()}, "--a: is given per entry"},
+      {{"--manifest", missing}, missing + ": cannot read the manifest"},
+  };
+  for (const Case& c : cases) {
+    const testing::Outcome o = verity(referee(c.args));
+    EXPECT_EQ(o.status, 2) << c.names;
+    EXPECT_NE(o.stderrText.find("verity: error: "), std::string::npos) << o.stderrText;
+    EXPECT_NE(o.stderrText.find(c.names), std::string::npos) << c.names << "\n" << o.stderrText;
+    EXPECT_TRUE(!std::filesystem::exists(dir_ / "work") || std::filesystem::is_empty(dir_ / "work"))
+        << c.names;
+  }
+}
+
+TEST_F(RefereeCommand, AFailingRenderNamesTheCommandAndShowsItsStderr) {
+  const testing::Outcome o = verity(referee({"--a", fake(), "--b", fake(" --fail")}));
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.stderrText.find("the render command of side B"), std::string::npos) << o.stderrText;
+  EXPECT_NE(o.stderrText.find("--fail"), std::string::npos) << o.stderrText;
+  EXPECT_NE(o.stderrText.find("fake renderer: failing as asked"), std::string::npos)
+      << o.stderrText;
+}
+
+// Verity's integrators against each other, rendered by `verity render` through command
+// templates: unbiased estimators of one image are EQUIVALENT within 15% (16 pixels wide, 16
+// spp, tiles of 8); cutting the paths to
+// one bounce changes the image, and the referee says DIFFER. Tiny renders: seconds.
+// The renders go to a fresh temporary folder that the referee removes.
+class RefereeOnVerity : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(RefereeOnVerity, IntegratorsAreEquivalentAndCutPathsDiffer) {
+  const std::string scene = std::string(VERITY_SCENES_DIR) + "/" + GetParam();
+  const auto render = [&](const std::string& integrator, const std::string& extra = "") {
+    return std::string(VERITY_BINARY) + " render " + scene +
+           " --resolution 16 --spp 16 --threads 1 --integrator " + integrator + extra +
+           " --seed {seed} -o {out}";
+  };
+  const std::vector<std::string> common = {"referee", "--tile",  "8",    "--margin",
+                                           "0.15",    "--alpha", "0.05", "--max-renders",
+                                           "64",      "--jobs",  "2"};
+  std::vector<std::string> same = common;
+  same.insert(same.end(), {"--a", render("path_tracer_nee"), "--b", render("bdpt")});
+  const testing::Outcome equivalent = verity(same);
+  EXPECT_EQ(equivalent.status, 0) << equivalent.stderrText;
+  std::vector<std::string> cut = common;
+  cut.insert(cut.end(), {"--a", render("path_tracer_nee"), "--b",
+                         render("path_tracer_nee", " --max-bounces 1")});
+  const testing::Outcome differ = verity(cut);
+  EXPECT_EQ(differ.status, 1) << differ.stderrText;
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, RefereeOnVerity,
+                         ::testing::Values("cornell-box.json", "glossy-cornell-box.json"),
+                         [](const auto& info) {
+                           std::string n = info.param;
+                           n = n.substr(0, n.find('.'));
+                           for (char& c : n)
+                             if (c == '-') c = '_';
+                           return n;
+                         });
+
+}  // namespace
+}  // namespace verity
+
+namespace verity {
+namespace {
+
+// `verity compare --margin` runs the referee's equivalence test on sets already rendered: exit
+// status 0 EQUIVALENT, 1 DIFFER, 3 neither; the JSON says EQUIVALENT or "not shown".
+class CompareMargin : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = testing::freshTestDirectory("verity_compare_margin_"); }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  // `count` renders of the fake renderer, seeds first, first + 2, ...
+  std::vector<std::string> renders(const std::string& name, int count, uint64_t first,
+                                   const std::string& extra = "") {
+    std::vector<std::string> files;
+    for (int i = 0; i < count; ++i) {
+      files.push_back((dir_ / (name + std::to_string(i) + ".exr")).string());
+      std::vector<std::string> args = {FAKE_RENDERER, "--seed", std::to_string(first + 2 * i),
+                                       "--out", files.back()};
+      std::istringstream words(extra);
+      for (std::string w; words >> w;) args.push_back(w);
+      EXPECT_EQ(testing::run(args).status, 0);
+    }
+    return files;
+  }
+  testing::Outcome compare(const std::vector<std::string>& a, const std::vector<std::string>& b,
+                           std::vector<std::string> extra) {
+    std::vector<std::string> args = {"compare", "--tile", "4", "--alpha", "0.05"};
+    args.push_back("-a");
+    args.insert(args.end(), a.begin(), a.end());
+    args.push_back("-b");
+    args.insert(args.end(), b.begin(), b.end());
+    args.insert(args.end(), extra.begin(), extra.end());
+    return verity(args);
+  }
+  std::filesystem::path dir_;
+};
+
+TEST_F(CompareMargin, SaysEquivalentDifferOrNeither) {
+  const auto a = renders("a", 32, 0), b = renders("b", 32, 1);
+  const std::string json = (dir_ / "report.json").string();
+  EXPECT_EQ(compare(a, b, {"--margin", "0.1", "-o", json}).status, 0);
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(json));
+  EXPECT_EQ(j["equivalence"]["verdict"], "EQUIVALENT");
+  EXPECT_EQ(j["equivalence"]["tests"].size(), 12u);
+  EXPECT_EQ(compare(a, renders("biased", 32, 1, "--bias 0.2"), {"--margin", "0.1"}).status, 1);
+  const auto few = std::vector<std::string>(a.begin(), a.begin() + 3);
+  const testing::Outcome neither =
+      compare(few, std::vector<std::string>(b.begin(), b.begin() + 3), {"--margin", "0.01"});
+  EXPECT_EQ(neither.status, 3);
+  // Without --margin, compare's statuses are unchanged: 0 agree.
+  EXPECT_EQ(compare(few, std::vector<std::string>(b.begin(), b.begin() + 3), {}).status, 0);
+  const testing::Outcome refused =
+      verity({"compare", a[0], a[1], "--margin", "0.05", "--alpha", "0.6"});
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.stderrText.find("--alpha: with --margin"), std::string::npos)
+      << refused.stderrText;
+}
+
+}  // namespace
+}  // namespace verity

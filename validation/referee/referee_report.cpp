@@ -1,0 +1,134 @@
+#include "validation/referee/referee_report.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "validation/compare/comparison_report.h"
+
+namespace verity::validation {
+
+namespace {
+
+nlohmann::json number(double x) {
+  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(x > 0 ? "inf" : "-inf");
+}
+
+std::string testName(const TileTest& t) {
+  return fmt::format("tile ({}, {}) {}", t.tileX, t.tileY, kChannelNames[t.channel]);
+}
+
+std::string marginText(double m) {
+  return std::isfinite(m) ? fmt::format("±{:.4g}", m) : std::string("none below 1");
+}
+
+}  // namespace
+
+nlohmann::json equivalenceJson(const ComparisonResult& comparison, const RoundDecision& decision,
+                               double margin) {
+  nlohmann::json tests = nlohmann::json::array();
+  for (size_t i = 0; i < comparison.tests.size(); ++i) {
+    const TileTest& t = comparison.tests[i];
+    const EquivalenceResult& e = decision.equivalence[i];
+    tests.push_back({{"tile", {t.tileX, t.tileY}},
+                     {"channel", kChannelNames[t.channel]},
+                     {"p_lower", e.pLower},
+                     {"p_upper", e.pUpper},
+                     {"p", e.p},
+                     {"equivalent", e.p <= decision.equivalenceLevel}});
+  }
+  const bool all = decision.equivalentTests == int(comparison.tests.size());
+  return {{"margin", margin},
+          {"level", decision.equivalenceLevel},
+          {"verdict", all ? "EQUIVALENT" : "not shown"},
+          {"equivalent_tests", decision.equivalentTests},
+          {"claimable_margin", number(claimableImageMargin(comparison, decision))},
+          {"tests", tests}};
+}
+
+std::string equivalenceSummary(const ComparisonResult& comparison, const RoundDecision& decision,
+                               double margin) {
+  const bool all = decision.equivalentTests == int(comparison.tests.size());
+  return fmt::format(
+      "equivalence within ±{} of A (two one-sided tests per tile and channel at level {}, "
+      "intersection-union): {} of {} tests pass; {}; the smallest margin every test passes: "
+      "{}\n",
+      margin, decision.equivalenceLevel, decision.equivalentTests, comparison.tests.size(),
+      all ? "EQUIVALENT" : "equivalence not shown",
+      marginText(claimableImageMargin(comparison, decision)));
+}
+
+nlohmann::json refereeJson(const RefereeResult& r, const RefereeOptions& o) {
+  nlohmann::json rounds = nlohmann::json::array();
+  for (const RoundRecord& round : r.rounds)
+    rounds.push_back({{"renders_a", round.rendersA},
+                      {"renders_b", round.rendersB},
+                      {"seconds", round.seconds},
+                      {"differ_level", round.decision.differLevel},
+                      {"equivalence_level", round.decision.equivalenceLevel},
+                      {"holm_rejections", round.rejections},
+                      {"equivalent_tests", round.decision.equivalentTests},
+                      {"decision", verdictName(round.decision.verdict)}});
+  nlohmann::json j = {{"verdict", r.verdictName()},
+                      {"options",
+                       {{"tile_size", o.tileSize},
+                        {"alpha", o.alpha},
+                        {"margin", o.margin},
+                        {"initial_renders", o.initialRenders},
+                        {"max_renders", o.maxRenders},
+                        {"max_seconds", o.maxSeconds},
+                        {"spending", spendingName(o.spending)},
+                        {"seed", o.seed}}},
+                      {"planned_rounds", r.plannedRounds},
+                      {"rounds", rounds},
+                      {"renders_a", r.rounds.empty() ? 0 : r.rounds.back().rendersA},
+                      {"renders_b", r.rounds.empty() ? 0 : r.rounds.back().rendersB},
+                      {"seconds", r.rounds.empty() ? 0.0 : r.rounds.back().seconds}};
+  if (r.rounds.empty()) return j;
+  j["comparison"] = comparisonJson(r.comparison);
+  j["equivalence"] = equivalenceJson(r.comparison, r.rounds.back().decision, o.margin);
+  if (r.verdict == Verdict::Undecided) {
+    j["stop_reason"] = r.stopReason;
+    j["claimable_margin"] = number(r.claimableMargin);
+    nlohmann::json undecided = nlohmann::json::array();
+    for (size_t i : r.undecided)
+      undecided.push_back({{"tile", {r.comparison.tests[i].tileX, r.comparison.tests[i].tileY}},
+                           {"channel", kChannelNames[r.comparison.tests[i].channel]}});
+    j["undecided"] = undecided;
+  }
+  return j;
+}
+
+std::string refereeSummary(const RefereeResult& r, const RefereeOptions& o) {
+  std::string s = fmt::format(
+      "referee: margin ±{} of A, level {} for DIFFER and for EQUIVALENT over at most {} rounds "
+      "({} spending), tiles of {} pixels\n",
+      o.margin, o.alpha, r.plannedRounds, spendingName(o.spending), o.tileSize);
+  for (size_t k = 0; k < r.rounds.size(); ++k) {
+    const RoundRecord& round = r.rounds[k];
+    s += fmt::format(
+        "  round {}: {} + {} renders, {:.1f} s: Holm rejects {} at level {:.3g}; {} of {} "
+        "tests equivalent at level {:.3g}: {}\n",
+        k + 1, round.rendersA, round.rendersB, round.seconds, round.rejections,
+        round.decision.differLevel, round.decision.equivalentTests, r.comparison.tests.size(),
+        round.decision.equivalenceLevel, verdictName(round.decision.verdict));
+  }
+  if (r.verdict == Verdict::Differ) {
+    for (size_t i : r.comparison.worst(3))
+      if (r.comparison.tests[i].rejected)
+        s += fmt::format("  differs: {} (A {:.6g}, B {:.6g}, relative difference {:+.3g})\n",
+                         testName(r.comparison.tests[i]), r.comparison.tests[i].pooled.a.mean,
+                         r.comparison.tests[i].pooled.b.mean,
+                         r.comparison.tests[i].relativeDifference);
+  } else if (r.verdict == Verdict::Undecided && !r.rounds.empty()) {
+    s += fmt::format("  {}; {} tests undecided:", r.stopReason, r.undecided.size());
+    for (size_t k = 0; k < std::min<size_t>(r.undecided.size(), 8); ++k)
+      s += " " + testName(r.comparison.tests[r.undecided[k]]) + ",";
+    if (r.undecided.size() > 8) s += " ...";
+    s += fmt::format("\n  the margin that could have been claimed: {}\n",
+                     marginText(r.claimableMargin));
+  }
+  return s + r.verdictName() + "\n";
+}
+
+}  // namespace verity::validation
