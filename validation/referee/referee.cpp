@@ -53,6 +53,12 @@ uint64_t renderSeed(uint64_t seed, Side side, int index) {
   return seed + 2 * uint64_t(index) + static_cast<uint64_t>(side);
 }
 
+RoundLevels roundLevels(const RefereeOptions& options, int round) {
+  const double level =
+      lookLevel(options.spending, options.alpha, round + 1, int(renderSchedule(options).size()));
+  return {level, level};
+}
+
 RefereeResult referee(RenderSource& source, const RefereeOptions& options,
                       const TileMoments* baseline) {
   checkRefereeOptions(options);
@@ -90,10 +96,11 @@ RefereeResult referee(RenderSource& source, const RefereeOptions& options,
                                     gridA.width, gridA.height));
     ComparisonOptions comparison;
     comparison.tileSize = options.tileSize;
-    comparison.alpha = lookLevel(options.spending, options.alpha, round + 1, r.plannedRounds);
+    const RoundLevels levels = roundLevels(options, round);
+    comparison.alpha = levels.differ;
     comparison.detectableBias = false;
     r.comparison = compareSides(MomentsSide(r.a, "A"), MomentsSide(r.b, "B"), comparison);
-    decision = decideRound(r.comparison, options.margin, comparison.alpha);
+    decision = decideRound(r.comparison, options.margin, levels.equivalence);
     r.rounds.push_back(
         {r.a.renders(), r.b.renders(), elapsed(), decision, r.comparison.holm.rejections});
     if (decision.verdict != Verdict::Undecided) {

@@ -55,6 +55,15 @@ std::vector<int> renderSchedule(const RefereeOptions& options);
 
 uint64_t renderSeed(uint64_t seed, Side side, int index);
 
+// The levels round `round` (0 ≤ round < K = renderSchedule(options).size()) spends: α_k of
+// options.spending at look k = round + 1 of K, for DIFFER's Holm procedure and for the
+// equivalence test's TOSTs alike (std::invalid_argument for a round outside). referee()
+// decides by them; the calibrations test by them.
+struct RoundLevels {
+  double differ = 0, equivalence = 0;
+};
+RoundLevels roundLevels(const RefereeOptions& options, int round);
+
 struct RoundRecord {
   int rendersA = 0, rendersB = 0;
   double seconds = 0;  // since the referee started, at the round's decision

@@ -37,7 +37,7 @@ nlohmann::json equivalenceJson(const ComparisonResult& comparison, const RoundDe
                      {"p", e.p},
                      {"equivalent", e.p <= decision.equivalenceLevel}});
   }
-  const bool all = decision.equivalentTests == int(comparison.tests.size());
+  const bool all = decision.allEquivalent();
   return {{"margin", margin},
           {"level", decision.equivalenceLevel},
           {"verdict", all ? "EQUIVALENT" : "not shown"},
@@ -48,7 +48,7 @@ nlohmann::json equivalenceJson(const ComparisonResult& comparison, const RoundDe
 
 std::string equivalenceSummary(const ComparisonResult& comparison, const RoundDecision& decision,
                                double margin) {
-  const bool all = decision.equivalentTests == int(comparison.tests.size());
+  const bool all = decision.allEquivalent();
   return fmt::format(
       "equivalence within ±{} of A (two one-sided tests per tile and channel at level {}, "
       "intersection-union): {} of {} tests pass; {}; the smallest margin every test passes: "

@@ -30,7 +30,7 @@ RoundDecision decideRound(const ComparisonResult& comparison, double margin,
   }
   if (comparison.differ)
     d.verdict = Verdict::Differ;
-  else if (d.equivalentTests == int(comparison.tests.size()))
+  else if (d.allEquivalent())
     d.verdict = Verdict::Equivalent;
   return d;
 }

@@ -27,6 +27,9 @@ struct RoundDecision {
   double differLevel = 0, equivalenceLevel = 0;
   std::vector<EquivalenceResult> equivalence;  // per test of the comparison, same order
   int equivalentTests = 0;
+
+  // The equivalence test's own decision, whatever DIFFER says: every test's TOST passes.
+  bool allEquivalent() const { return equivalentTests == int(equivalence.size()); }
 };
 
 // `comparison` was decided at the DIFFER level (its options.alpha); margin in [0, 1),

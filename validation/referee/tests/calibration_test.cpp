@@ -5,7 +5,9 @@
 // - false DIFFER ≤ α when A and B have the same expectations;
 // - false EQUIVALENT ≤ α when the true relative bias equals the margin, in every tile or in
 //   one channel of one tile only (the worst case of the intersection-union test: one test at
-//   the margin, all others far inside).
+//   the margin, all others far inside);
+// - the same for the equivalence test alone: the whole schedule rendered whatever DIFFER says,
+//   false EQUIVALENT at any look ≤ α (the union bound over the looks that its spending buys).
 // Normal and heavy-tailed (log-normal) pixels. Each case prints its decisions and the renders
 // per side they took (docs/referee.md quotes them). Seeds fixed by the cases' names.
 #include <gtest/gtest.h>
@@ -15,6 +17,7 @@
 #include <string>
 
 #include "core/hash.h"
+#include "validation/referee/moments_side.h"
 #include "validation/referee/referee.h"
 #include "validation/referee/tests/fake_images.h"
 
@@ -39,7 +42,7 @@ struct Tally {
   int maxRenders = 0;
 };
 
-Tally runCase(const Case& c) {
+testing::FakeRenderSource fakeSource(const Case& c) {
   testing::FakeScene a;
   a.heavyTails = c.heavy;
   a.noise = c.heavy ? 0.5 : 0.25;
@@ -47,16 +50,29 @@ Tally runCase(const Case& c) {
   b.bias = c.biasInMargins * c.margin;
   b.biasedTiles = c.biasedTiles;
   b.biasedChannels = c.biasedChannels;
-  testing::FakeRenderSource source(a, b);
+  return {a, b};
+}
+
+RefereeOptions refereeOptions(const Case& c) {
   RefereeOptions options;
-  options.tileSize = a.tileSize;
+  options.tileSize = testing::FakeScene().tileSize;
   options.alpha = kAlpha;
   options.margin = c.margin;
   options.initialRenders = 4;
   options.maxRenders = 256;
+  return options;
+}
+
+uint64_t runSeed(const Case& c, int run) {
+  return hashString(c.name) + uint64_t(run) * 1000;
+}
+
+Tally runCase(const Case& c) {
+  testing::FakeRenderSource source = fakeSource(c);
+  RefereeOptions options = refereeOptions(c);
   Tally t;
   for (int run = 0; run < kRuns; ++run) {
-    options.seed = hashString(c.name) + uint64_t(run) * 1000;
+    options.seed = runSeed(c, run);
     const RefereeResult r = referee(source, options);
     t.equivalent += r.verdict == Verdict::Equivalent;
     t.differ += r.verdict == Verdict::Differ;
@@ -67,6 +83,40 @@ Tally runCase(const Case& c) {
   std::printf("| %-28s | %4d | %4d | %4d | %6.1f |\n", c.name.c_str(), t.equivalent, t.differ,
               t.inconclusive, t.meanRenders);
   return t;
+}
+
+// The equivalence test alone across rounds: each run renders the whole schedule, never stopping
+// at DIFFER, and decides each look's equivalence (decideRound's TOSTs, at the level the referee
+// spends at that look); counts the runs in which any look claims EQUIVALENT.
+int anyLookEquivalent(const Case& c) {
+  testing::FakeRenderSource source = fakeSource(c);
+  const RefereeOptions options = refereeOptions(c);
+  const std::vector<int> schedule = renderSchedule(options);
+  int claimed = 0;
+  for (int run = 0; run < kRuns; ++run) {
+    TileMoments a(options.tileSize), b(options.tileSize);
+    bool equivalent = false;
+    for (int round = 0; round < int(schedule.size()) && !equivalent; ++round) {
+      std::vector<RenderRequest> requests;
+      for (int i = b.renders(); i < schedule[round]; ++i)
+        for (Side side : {Side::A, Side::B})
+          requests.push_back({side, renderSeed(runSeed(c, run), side, i)});
+      const std::vector<Rendered> images = source.render(requests);
+      for (size_t i = 0; i < images.size(); ++i)
+        (requests[i].side == Side::A ? a : b).add(images[i].image, images[i].label);
+      const RoundLevels levels = roundLevels(options, round);
+      ComparisonOptions comparison;
+      comparison.tileSize = options.tileSize;
+      comparison.alpha = levels.differ;
+      comparison.detectableBias = false;
+      equivalent = decideRound(compareSides(MomentsSide(a, "A"), MomentsSide(b, "B"), comparison),
+                               options.margin, levels.equivalence)
+                       .allEquivalent();
+    }
+    claimed += equivalent;
+  }
+  std::printf("| %-28s | any look EQUIVALENT: %4d |\n", c.name.c_str(), claimed);
+  return claimed;
 }
 
 // The lower end of the 99% Clopper–Pearson interval of a rate of `count` in kRuns.
@@ -95,6 +145,27 @@ TEST_P(Calibration, FalseEquivalentAtTheMarginAtMostAlpha) {
     EXPECT_LE(lowerBound(t.equivalent), kAlpha)
         << t.equivalent << " of " << kRuns << " runs said EQUIVALENT";
   }
+}
+
+// The equivalence test's spending on its own: above, DIFFER catches a bias of a whole margin
+// before the TOSTs can err, which would hide an equivalence test that spent α at every look.
+// One test at the margin is the worst case; every tile at the margin needs all twelve TOSTs to
+// err together. Two tests, so that each is a few seconds (every run renders all 256 per side).
+void expectFalseEquivalentAtAnyLookAtMostAlpha(bool heavy, bool oneTest) {
+  const std::string name = std::string(heavy ? "heavy" : "normal") + ", bias = margin" +
+                           (oneTest ? " in one test" : "") + ", any look";
+  const int claimed =
+      anyLookEquivalent({name, heavy, heavy ? 0.1 : 0.05, 1, oneTest ? 1 : -1, oneTest ? 1 : 3});
+  EXPECT_LE(lowerBound(claimed), kAlpha)
+      << claimed << " of " << kRuns << " runs said EQUIVALENT at some look";
+}
+
+TEST_P(Calibration, FalseEquivalentAtAnyLookOneTestAtMostAlpha) {
+  expectFalseEquivalentAtAnyLookAtMostAlpha(GetParam(), true);
+}
+
+TEST_P(Calibration, FalseEquivalentAtAnyLookEveryTileAtMostAlpha) {
+  expectFalseEquivalentAtAnyLookAtMostAlpha(GetParam(), false);
 }
 
 // Not a requirement but the table of docs/referee.md: what each decision costs, and that the
