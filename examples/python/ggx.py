@@ -6,8 +6,9 @@ wi (3,) or (N, 3), wo and u (N, 3). Local frame: normal +z.
 
 `broken=True` plants a subtle pdf error: pdf() and sample() report the density of sampling
 all normals, D(h)·h.z/(4 wo·h), while sample() draws visible normals. The weight is still
-eval·cos/pdf of the density it claims, and both lobes integrate to about 1, so only the
-histogram's shape can tell.
+eval·cos/pdf of the density it claims, so no per-sample check sees it: the histogram does
+(10⁵ samples at 50°: chi-square p < 10⁻³⁰⁰), and the pdf integral (0.849 against a valid
+fraction of 0.911).
 """
 import numpy as np
 
@@ -40,29 +41,28 @@ class Ggx:
         h = _normalize(wi + wo)
         return h * np.sign(_z(h))[..., None]
 
+    def _fresnel(self, cos):
+        return F0 + (1 - F0) * (1 - np.clip(cos, 0, 1))[..., None] ** 5
+
     def eval(self, wi, wo):
         wi = np.broadcast_to(wi, wo.shape)
         same_side = (_z(wi) > 0) & (_z(wo) > 0)
         h = self._half(wi, wo)
         g2 = 1 / (1 + self._lambda(wi) + self._lambda(wo))
-        fresnel = F0 + (1 - F0) * (1 - np.clip(np.sum(wi * h, axis=-1), 0, 1))[..., None] ** 5
-        f = (self._d(h) * g2 / (4 * np.abs(_z(wi) * _z(wo))))[..., None] * fresnel
-        return np.where(same_side[..., None], f, 0.0)
+        f = (self._d(h) * g2 / (4 * np.abs(_z(wi) * _z(wo))))[..., None]
+        return np.where(same_side[..., None], f * self._fresnel(np.sum(wi * h, axis=-1)), 0.0)
+
+    def _pdf_of(self, wi, wo, h):
+        if self.broken:
+            return self._d(h) * _z(h) / (4 * np.abs(np.sum(wo * h, axis=-1)))
+        # Heitz 2018, eq. 17 and the Jacobian of reflection, 1/(4 wo·h).
+        return self._d(h) / ((1 + self._lambda(wi)) * 4 * np.abs(_z(wi)))
 
     def pdf(self, wi, wo):
-        wi = np.broadcast_to(wi, wo.shape)
         same_side = (_z(wi) > 0) & (_z(wo) > 0)
-        h = self._half(wi, wo)
-        if self.broken:
-            p = self._d(h) * _z(h) / (4 * np.abs(np.sum(wo * h, axis=-1)))
-        else:
-            # Heitz 2018, eq. 17 and the Jacobian of reflection, 1/(4 wo·h).
-            g1 = 1 / (1 + self._lambda(wi))
-            p = g1 * self._d(h) / (4 * np.abs(_z(wi)))
-        return np.where(same_side, p, 0.0)
+        return np.where(same_side, self._pdf_of(wi, wo, self._half(wi, wo)), 0.0)
 
     def sample(self, wi, u):
-        n = len(u)
         # Heitz 2018, listing 1: the visible normal in the hemisphere configuration.
         v = _normalize(np.array([self.alpha * wi[0], self.alpha * wi[1], wi[2]]))
         lensq = v[0] ** 2 + v[1] ** 2
@@ -77,9 +77,15 @@ class Ggx:
               + np.sqrt(np.maximum(0, 1 - p1 * p1 - p2 * p2))[:, None] * v)
         h = _normalize(np.stack([self.alpha * nh[:, 0], self.alpha * nh[:, 1],
                                  np.maximum(1e-7, nh[:, 2])], axis=-1))
-        wo = 2 * (h @ wi)[:, None] * h - wi
-        pdf = self.pdf(wi, wo)
-        f = self.eval(wi, wo)
-        weight = np.where((pdf > 0)[:, None], f * np.abs(_z(wo))[:, None]
-                          / np.where(pdf > 0, pdf, 1)[:, None], 0.0)
-        return wo, weight, pdf
+        cos = h @ wi
+        wo = 2 * cos[:, None] * h - wi
+        up = _z(wo) > 0
+        pdf = np.where(up, self._pdf_of(wi, wo, h), 0.0)
+        if self.broken:  # the weight of the density it claims
+            f = self.eval(wi, wo)
+            weight = f * (np.abs(_z(wo)) / np.where(up, pdf, 1))[:, None]
+        else:
+            # Heitz 2018, eq. 19: f·cos/pdf = F·G2/G1(wi).
+            g1 = 1 + self._lambda(wi)
+            weight = self._fresnel(cos) * (g1 / (g1 + self._lambda(wo)))[:, None]
+        return wo, np.where(up[:, None], weight, 0.0), pdf
