@@ -75,7 +75,7 @@ void requireNoNan(const Callable& c, const py::array_t<double>& a, const std::st
           fmt::format("{}: {} returned NaN in {} (flat index {})", c.check, c.signature, what, k));
 }
 
-py::array_t<double> toArray(std::span<const Eigen::Vector3d> v) {
+py::array_t<double> toArray(const std::vector<Eigen::Vector3d>& v) {
   py::array_t<double> a({static_cast<py::ssize_t>(v.size()), py::ssize_t(3)});
   double* p = a.mutable_data();
   for (size_t k = 0; k < v.size(); ++k)

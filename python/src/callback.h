@@ -10,7 +10,6 @@
 #include <pybind11/pybind11.h>
 
 #include <Eigen/Core>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -37,7 +36,7 @@ py::array_t<double> readArray(const Callable& c, const py::handle& value, const 
                               const std::vector<std::vector<py::ssize_t>>& shapes);
 
 // (N, 3) directions or points, for passing to a callable.
-py::array_t<double> toArray(std::span<const Eigen::Vector3d> v);
+py::array_t<double> toArray(const std::vector<Eigen::Vector3d>& v);
 py::array_t<double> toArray(const Eigen::Vector3d& v);
 
 // Raises ValueError if any value of the array is NaN, naming the callable and the first index.

@@ -33,7 +33,7 @@ chi2::CheckResult checkBsdf(py::object sample, py::object eval, py::object pdf,
   const std::string check = checkName("check_bsdf", kw);
   std::vector<std::string> known = kCheckKeywords;
   known.insert(known.end(), kBsdfKeywords.begin(), kBsdfKeywords.end());
-  known.push_back("wi");
+  known.insert(known.end(), {"wi", "exterior_index", "interior_index"});
   requireKnown(kw, check, known);
   if (!kw.contains("wi"))
     throw py::type_error(check +
@@ -45,7 +45,16 @@ chi2::CheckResult checkBsdf(py::object sample, py::object eval, py::object pdf,
   const Eigen::Vector3d wi(wiValues.data());
   chi2::BsdfCheckOptions options;
   readBsdfOptions(kw, check, options);
-  const chi2::BsdfModel model = pythonBsdf(sample, eval, pdf, wi, check);
+  chi2::BsdfModel model = pythonBsdf(sample, eval, pdf, wi, check);
+  // The indices of refraction on either side (bsdf_model.h): reciprocity across a refraction
+  // and where a transmission lobe peaks.
+  for (auto [key, index] : {std::pair{"exterior_index", &model.exteriorIndex},
+                            std::pair{"interior_index", &model.interiorIndex}})
+    if (kw.contains(key) && !kw[key].is_none()) {
+      *index = kw[key].cast<double>();
+      if (!(*index > 0))
+        throw py::value_error(fmt::format("{}: {} = {}: must be positive", check, key, *index));
+    }
   return released([&] { return chi2::checkBsdf(model, wi, options); });
 }
 
@@ -91,7 +100,8 @@ Local frame: normal +z, wi and wo pointing away from the surface, wo.z < 0 trans
 Keywords: wi and alpha (required), name, samples, seed, resolution, power,
 detect=(density_error, mass), max_samples, cells ('equal' or 'grid'), weight_tolerance,
 reciprocity_tolerance, reciprocity, eta, direction_tolerance,
-expect={'reflection'|'refraction'|'pass-through': (share or None, albedo or None)}.
+expect={'reflection'|'refraction'|'pass-through': (share or None, albedo or None)},
+exterior_index and interior_index (1: the indices of refraction above and below).
 Returns a Result.)");
   m.def("check_warp", &checkWarp, py::arg("domain"), py::arg("sample"), py::arg("pdf"),
         R"(Checks a warp given as two batched callables on a domain ('square', 'disk',

@@ -17,7 +17,7 @@ std::vector<std::vector<py::ssize_t>> valueShapes(py::ssize_t n, int components)
   return {{n, components}};
 }
 
-void readValues(const py::array_t<double>& a, std::span<Eigen::ArrayXd> out, int components) {
+void readValues(const py::array_t<double>& a, std::vector<Eigen::ArrayXd>& out, int components) {
   const double* p = a.data();
   for (size_t k = 0; k < out.size(); ++k)
     out[k] = Eigen::Map<const Eigen::ArrayXd>(p + k * components, components);
@@ -42,14 +42,15 @@ chi2::BsdfModel pythonBsdf(py::object sample, py::object eval, py::object pdf,
     // Its number of components, from eval at the mirror direction.
     const Eigen::Vector3d w = wi.normalized(), mirror(-w.x(), -w.y(), w.z());
     py::gil_scoped_acquire gil;
-    const py::array_t<double> f =
-        readArray(evalFn, call(evalFn, py::make_tuple(toArray(w), toArray(std::span(&mirror, 1)))),
-                  "its value", {{1}, {1, -1}});
+    const py::array_t<double> f = readArray(
+        evalFn,
+        call(evalFn, py::make_tuple(toArray(w), toArray(std::vector<Eigen::Vector3d>{mirror}))),
+        "its value", {{1}, {1, -1}});
     m.components = f.ndim() == 1 ? 1 : static_cast<int>(f.shape(1));
   }
   const int components = m.components;
-  m.sampleBatch = [fns, components](const Eigen::Vector3d& wi, std::span<const BsdfUniforms> u,
-                                    std::span<std::optional<DirectionSample>> out) {
+  m.sampleBatch = [fns, components](const Eigen::Vector3d& wi, const std::vector<BsdfUniforms>& u,
+                                    std::vector<std::optional<DirectionSample>>& out) {
     const Callable& sampleFn = fns->sample;
     const auto n = static_cast<py::ssize_t>(u.size());
     py::gil_scoped_acquire gil;
@@ -83,9 +84,9 @@ chi2::BsdfModel pythonBsdf(py::object sample, py::object eval, py::object pdf,
       out[k] = s;
     }
   };
-  m.evalBatch = [fns, components](std::span<const Eigen::Vector3d> wi,
-                                  std::span<const Eigen::Vector3d> wo,
-                                  std::span<Eigen::ArrayXd> out) {
+  m.evalBatch = [fns, components](const std::vector<Eigen::Vector3d>& wi,
+                                  const std::vector<Eigen::Vector3d>& wo,
+                                  std::vector<Eigen::ArrayXd>& out) {
     const Callable& evalFn = fns->eval;
     const auto n = static_cast<py::ssize_t>(out.size());
     py::gil_scoped_acquire gil;
@@ -98,8 +99,8 @@ chi2::BsdfModel pythonBsdf(py::object sample, py::object eval, py::object pdf,
     requireNoNan(evalFn, f, "its value");
     readValues(f, out, components);
   };
-  m.pdfBatch = [fns](const Eigen::Vector3d& wi, std::span<const Eigen::Vector3d> wo,
-                     std::span<double> out) {
+  m.pdfBatch = [fns](const Eigen::Vector3d& wi, const std::vector<Eigen::Vector3d>& wo,
+                     std::vector<double>& out) {
     const Callable& pdfFn = fns->pdf;
     const auto n = static_cast<py::ssize_t>(out.size());
     py::gil_scoped_acquire gil;
@@ -110,19 +111,19 @@ chi2::BsdfModel pythonBsdf(py::object sample, py::object eval, py::object pdf,
   };
   // The point-by-point forms, for any check that asks for one direction (a batch of one).
   m.sample = [batch = m.sampleBatch](const Eigen::Vector3d& wi, const BsdfUniforms& u) {
-    std::optional<DirectionSample> s;
-    batch(wi, std::span(&u, 1), std::span(&s, 1));
-    return s;
+    std::vector<std::optional<DirectionSample>> s(1);
+    batch(wi, {u}, s);
+    return s[0];
   };
   m.eval = [batch = m.evalBatch](const Eigen::Vector3d& wi, const Eigen::Vector3d& wo) {
-    Eigen::ArrayXd f;
-    batch(std::span(&wi, 1), std::span(&wo, 1), std::span(&f, 1));
-    return f;
+    std::vector<Eigen::ArrayXd> f(1);
+    batch({wi}, {wo}, f);
+    return f[0];
   };
   m.pdf = [batch = m.pdfBatch](const Eigen::Vector3d& wi, const Eigen::Vector3d& wo) {
-    double p = 0;
-    batch(wi, std::span(&wo, 1), std::span(&p, 1));
-    return p;
+    std::vector<double> p(1);
+    batch(wi, {wo}, p);
+    return p[0];
   };
   return m;
 }

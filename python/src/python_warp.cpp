@@ -29,8 +29,8 @@ chi2::WarpModel pythonWarp(chi2::WarpDomain domain, py::object sample, py::objec
   const py::ssize_t dims = chi2::isDirectional(domain) ? 3 : 2;
   chi2::WarpModel m;
   m.domain = domain;
-  m.sampleBatch = [fns, dims](std::span<const chi2::Uniform2> u,
-                              std::span<std::optional<Eigen::Vector3d>> out) {
+  m.sampleBatch = [fns, dims](const std::vector<chi2::Uniform2>& u,
+                              std::vector<std::optional<Eigen::Vector3d>>& out) {
     const auto n = static_cast<py::ssize_t>(u.size());
     py::gil_scoped_acquire gil;
     py::array_t<double> us({n, py::ssize_t(2)});
@@ -48,7 +48,8 @@ chi2::WarpModel pythonWarp(chi2::WarpDomain domain, py::object sample, py::objec
       out[k] = Eigen::Vector3d(r[0], r[1], dims == 3 ? r[2] : 0);
     }
   };
-  m.pdfBatch = [fns, dims](std::span<const Eigen::Vector3d> points, std::span<double> values) {
+  m.pdfBatch = [fns, dims](const std::vector<Eigen::Vector3d>& points,
+                           std::vector<double>& values) {
     const auto n = static_cast<py::ssize_t>(values.size());
     py::gil_scoped_acquire gil;
     py::array_t<double> a({n, dims});
@@ -60,14 +61,14 @@ chi2::WarpModel pythonWarp(chi2::WarpDomain domain, py::object sample, py::objec
     std::copy(v.data(), v.data() + n, values.begin());
   };
   m.sample = [batch = m.sampleBatch](const chi2::Uniform2& u) {
-    std::optional<Eigen::Vector3d> p;
-    batch(std::span(&u, 1), std::span(&p, 1));
-    return p;
+    std::vector<std::optional<Eigen::Vector3d>> p(1);
+    batch({u}, p);
+    return p[0];
   };
   m.pdf = [batch = m.pdfBatch](const Eigen::Vector3d& point) {
-    double v = 0;
-    batch(std::span(&point, 1), std::span(&v, 1));
-    return v;
+    std::vector<double> v(1);
+    batch({point}, v);
+    return v[0];
   };
   return m;
 }

@@ -1,6 +1,8 @@
 """Every option of the C++ checks is a keyword: the seed and name make a check reproducible,
 a detection target chooses the sample count, and a budget too small for it is INCONCLUSIVE.
 Level and seeds as in test_bsdf.py."""
+import numpy as np
+import pytest
 import verity
 
 from lobes import Lambert
@@ -39,3 +41,28 @@ def test_equal_probability_cells_and_a_resolution():
     r = check(name="py equal", samples=100_000, cells="equal", resolution=8)
     assert r.passed, str(r)
     assert r.chi_square["cells"] == 8 * 16
+
+
+def test_indices_of_refraction_scale_the_reciprocity_check():
+    # A diffuse transmitter with the same f both ways is reciprocal only between equal
+    # indices: across 1 | 1.5, eval(wi, wo)·ηo² and eval(wo, wi)·ηi² differ by 2.25.
+    def sample(wi, u):
+        wo, weight, pdf = Lambert().sample(wi, u)
+        return wo * [1, 1, -1], weight, pdf
+
+    def eval_(wi, wo):
+        wi = np.broadcast_to(wi, wo.shape)
+        return np.where(wi[..., 2] * wo[..., 2] < 0, 0.8 / np.pi, 0.0)
+
+    def pdf(wi, wo):
+        return np.where(wo[..., 2] < 0, -wo[..., 2] / np.pi, 0.0)
+
+    def run(**indices):
+        return verity.check_bsdf(sample, eval_, pdf, wi=WI, name="py transmitter", alpha=1e-3,
+                                 cells="grid", samples=20_000, **indices)
+
+    assert run().passed
+    r = run(exterior_index=1.0, interior_index=1.5)
+    assert r.verdict == "FAILED" and "reciprocity" in r.failures, str(r)
+    with pytest.raises(ValueError, match="interior_index = -1"):
+        run(interior_index=-1)

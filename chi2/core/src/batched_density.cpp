@@ -36,7 +36,7 @@ struct BatchedDensity::Memory {
   }
 };
 
-bool BatchedDensity::evaluateMissing(std::span<Memory> memories) {
+bool BatchedDensity::evaluateMissing(std::vector<Memory>& memories) {
   // Each memory's points once, in an order that does not depend on the threads' scheduling.
   std::vector<Point2d> points;
   for (Memory& m : memories) {
@@ -65,10 +65,10 @@ bool BatchedDensity::evaluateMissing(std::span<Memory> memories) {
 }
 
 void BatchedDensity::run(const std::function<void(const DensityFn& f)>& compute) {
-  Memory memory;
-  const DensityFn f = [&memory](double x, double y) { return memory.lookup(x, y); };
+  std::vector<Memory> memory(1);
+  const DensityFn f = [&memory](double x, double y) { return memory[0].lookup(x, y); };
   do compute(f);
-  while (evaluateMissing(std::span(&memory, 1)));
+  while (evaluateMissing(memory));
 }
 
 void BatchedDensity::run(int count, const std::function<void(int task, const DensityFn& f)>& task) {

@@ -73,7 +73,7 @@ std::optional<Point2d> BsdfModelSubject::sample(pcg32& rng, Audit& audit) const 
   return audited(u, model_.sample(wi, u), PointByPoint{*this}, audit);
 }
 
-void BsdfModelSubject::sampleBatch(pcg32& rng, std::span<std::optional<Point2d>> out,
+void BsdfModelSubject::sampleBatch(pcg32& rng, std::vector<std::optional<Point2d>>& out,
                                    Audit& audit) const {
   if (!model_.sampleBatch || !model_.evalBatch) return Subject::sampleBatch(rng, out, audit);
   const Vector3d& wi = setup_.wi;
@@ -89,7 +89,7 @@ void BsdfModelSubject::sampleBatch(pcg32& rng, std::span<std::optional<Point2d>>
       index[k] = wos.size();
       wos.push_back(drawn[k]->wo);
     }
-  const std::span<const Vector3d> one(&wi, 1);
+  const std::vector<Vector3d> one{wi};
   std::vector<Eigen::ArrayXd> f(wos.size()), fr(setup_.checkReciprocity ? wos.size() : 0);
   std::vector<double> p(wos.size());
   if (!wos.empty()) {
@@ -113,7 +113,8 @@ void BsdfModelSubject::sampleBatch(pcg32& rng, std::span<std::optional<Point2d>>
     out[k] = audited(us[k], drawn[k], Batch{f, p, fr, index[k]}, audit);
 }
 
-void BsdfModelSubject::pdfBatch(std::span<const Point2d> points, std::span<double> values) const {
+void BsdfModelSubject::pdfBatch(const std::vector<Point2d>& points,
+                                std::vector<double>& values) const {
   std::vector<Vector3d> wos(points.size());
   for (size_t k = 0; k < points.size(); ++k)
     wos[k] = setup_.frame.toLocal(sphereDirectionAtLastAzimuth(points[k].x(), points[k].y()));
@@ -263,7 +264,7 @@ void BsdfModelSubject::extraChecks(Audit& audit) const {
   std::vector<Eigen::ArrayXd> batch;
   if (model_.evalBatch) {
     batch.resize(wos.size());
-    model_.evalBatch(std::span<const Vector3d>(&setup_.wi, 1), wos, batch);
+    model_.evalBatch(std::vector<Vector3d>{setup_.wi}, wos, batch);
   }
   for (size_t c = 0; c < wos.size(); ++c) {
     const Vector3d& wo = wos[c];

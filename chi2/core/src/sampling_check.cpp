@@ -93,7 +93,7 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   // subject evaluates its density so, with the same figures (batched_density.h).
   std::vector<CellIntegral> integrals;
   if (subject.batchedPdf()) {
-    BatchedDensity batched([&](std::span<const Point2d> points, std::span<double> values) {
+    BatchedDensity batched([&](const std::vector<Point2d>& points, std::vector<double>& values) {
       subject.pdfBatch(points, values);
       for (size_t k = 0; k < points.size(); ++k)
         values[k] = checked(values[k], points[k].x(), points[k].y());

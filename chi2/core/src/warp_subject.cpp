@@ -41,7 +41,7 @@ double WarpSubject::pdf(double x, double y) const {
   return model_.pdf(point(x, y));
 }
 
-void WarpSubject::pdfBatch(std::span<const Point2d> points, std::span<double> values) const {
+void WarpSubject::pdfBatch(const std::vector<Point2d>& points, std::vector<double>& values) const {
   std::vector<Vector3d> p(points.size());
   for (size_t k = 0; k < points.size(); ++k) p[k] = point(points[k].x(), points[k].y());
   model_.pdfBatch(p, values);
@@ -63,7 +63,7 @@ std::optional<Point2d> WarpSubject::sample(pcg32& rng, Audit& audit) const {
   return audited(u, model_.sample(u), audit);
 }
 
-void WarpSubject::sampleBatch(pcg32& rng, std::span<std::optional<Point2d>> out,
+void WarpSubject::sampleBatch(pcg32& rng, std::vector<std::optional<Point2d>>& out,
                               Audit& audit) const {
   if (!model_.sampleBatch) return Subject::sampleBatch(rng, out, audit);
   std::vector<Uniform2> us(out.size());

@@ -38,20 +38,20 @@ struct Calls {
 
 BsdfModel batched(BsdfModel m, Calls& calls) {
   const BsdfModel point = m;
-  m.sampleBatch = [point, &calls](const Eigen::Vector3d& wi, std::span<const BsdfUniforms> u,
-                                  std::span<std::optional<DirectionSample>> out) {
+  m.sampleBatch = [point, &calls](const Eigen::Vector3d& wi, const std::vector<BsdfUniforms>& u,
+                                  std::vector<std::optional<DirectionSample>>& out) {
     ++calls.sample;
     for (size_t k = 0; k < u.size(); ++k) out[k] = point.sample(wi, u[k]);
   };
-  m.evalBatch = [point, &calls](std::span<const Eigen::Vector3d> wi,
-                                std::span<const Eigen::Vector3d> wo,
-                                std::span<Eigen::ArrayXd> out) {
+  m.evalBatch = [point, &calls](const std::vector<Eigen::Vector3d>& wi,
+                                const std::vector<Eigen::Vector3d>& wo,
+                                std::vector<Eigen::ArrayXd>& out) {
     ++calls.eval;
     for (size_t k = 0; k < out.size(); ++k)
       out[k] = point.eval(wi[wi.size() == 1 ? 0 : k], wo[wo.size() == 1 ? 0 : k]);
   };
-  m.pdfBatch = [point, &calls](const Eigen::Vector3d& wi, std::span<const Eigen::Vector3d> wo,
-                               std::span<double> out) {
+  m.pdfBatch = [point, &calls](const Eigen::Vector3d& wi, const std::vector<Eigen::Vector3d>& wo,
+                               std::vector<double>& out) {
     ++calls.pdf;
     for (size_t k = 0; k < wo.size(); ++k) out[k] = point.pdf(wi, wo[k]);
   };
@@ -84,7 +84,7 @@ TEST(BatchedDensity, GivesTheIntegralsOfThePointByPointDensityInFewBatches) {
   const Domain d = sphereDomain(16);
   auto f = [](double x, double y) { return std::exp(-40 * (y - 0.7) * (y - 0.7)) * (1 + x); };
   const std::vector<CellIntegral> direct = integrateGrid(f, d, {});
-  BatchedDensity batched([&](std::span<const Point2d> p, std::span<double> v) {
+  BatchedDensity batched([&](const std::vector<Point2d>& p, std::vector<double>& v) {
     for (size_t k = 0; k < p.size(); ++k) v[k] = f(p[k].x(), p[k].y());
   });
   // As one computation, and as one per cell.
@@ -131,12 +131,12 @@ TEST(BatchedWarp, IsCheckedAsThePointByPointModel) {
       [](const Vec3& w) { return lambert_toy::cosinePdf(w); });
   std::atomic<int> calls{0};
   WarpModel b = m;
-  b.sampleBatch = [m, &calls](std::span<const Uniform2> u,
-                              std::span<std::optional<Eigen::Vector3d>> out) {
+  b.sampleBatch = [m, &calls](const std::vector<Uniform2>& u,
+                              std::vector<std::optional<Eigen::Vector3d>>& out) {
     ++calls;
     for (size_t k = 0; k < u.size(); ++k) out[k] = m.sample(u[k]);
   };
-  b.pdfBatch = [m, &calls](std::span<const Eigen::Vector3d> p, std::span<double> v) {
+  b.pdfBatch = [m, &calls](const std::vector<Eigen::Vector3d>& p, std::vector<double>& v) {
     ++calls;
     for (size_t k = 0; k < p.size(); ++k) v[k] = m.pdf(p[k]);
   };

@@ -15,14 +15,14 @@
 #include <verity/chi2/quadrature.h>
 
 #include <functional>
-#include <span>
+#include <vector>
 
 namespace verity::chi2 {
 
 // The density at every point of a batch: values[k] = f(points[k]). Called from the thread
 // that called run.
 using DensityBatchFn =
-    std::function<void(std::span<const Point2d> points, std::span<double> values)>;
+    std::function<void(const std::vector<Point2d>& points, std::vector<double>& values)>;
 
 class BatchedDensity {
  public:
@@ -42,7 +42,7 @@ class BatchedDensity {
  private:
   struct Memory;
   // Evaluates what the memories asked for, in one batch; false when they asked for nothing.
-  bool evaluateMissing(std::span<Memory> memories);
+  bool evaluateMissing(std::vector<Memory>& memories);
 
   DensityBatchFn batch_;
   long long batches_ = 0, evaluations_ = 0;

@@ -27,7 +27,6 @@
 #include <Eigen/Core>
 #include <functional>
 #include <optional>
-#include <span>
 #include <vector>
 
 namespace verity::chi2 {
@@ -57,15 +56,15 @@ struct BsdfModel {
   // at once (batched_density.h). sample, eval and pdf are still needed where these are not
   // (the delta lobes' own checks, a sample's reversed evaluation through evalAdjoint).
   using SampleBatchFn =
-      std::function<void(const Eigen::Vector3d& wi, std::span<const BsdfUniforms> u,
-                         std::span<std::optional<DirectionSample>> out)>;
+      std::function<void(const Eigen::Vector3d& wi, const std::vector<BsdfUniforms>& u,
+                         std::vector<std::optional<DirectionSample>>& out)>;
   // wi holds one direction for every wo, or one direction per wo (the reversed evaluations
   // of the reciprocity check).
   using EvalBatchFn =
-      std::function<void(std::span<const Eigen::Vector3d> wi, std::span<const Eigen::Vector3d> wo,
-                         std::span<Eigen::ArrayXd> out)>;
+      std::function<void(const std::vector<Eigen::Vector3d>& wi,
+                         const std::vector<Eigen::Vector3d>& wo, std::vector<Eigen::ArrayXd>& out)>;
   using PdfBatchFn = std::function<void(
-      const Eigen::Vector3d& wi, std::span<const Eigen::Vector3d> wo, std::span<double> out)>;
+      const Eigen::Vector3d& wi, const std::vector<Eigen::Vector3d>& wo, std::vector<double>& out)>;
   SampleBatchFn sampleBatch;
   EvalBatchFn evalBatch;
   PdfBatchFn pdfBatch;
@@ -81,7 +80,7 @@ struct BsdfModel {
 
 // out[k] = model.sample(wi, u[k]): one call of sampleBatch where the model has it.
 void sampleDirections(const BsdfModel& model, const Eigen::Vector3d& wi,
-                      std::span<const BsdfUniforms> u,
-                      std::span<std::optional<DirectionSample>> out);
+                      const std::vector<BsdfUniforms>& u,
+                      std::vector<std::optional<DirectionSample>>& out);
 
 }  // namespace verity::chi2

@@ -41,9 +41,10 @@ class BsdfModelSubject : public Subject {
   double pdf(double phi, double z) const override;
   std::optional<Point2d> sample(pcg32& rng, Audit& audit) const override;
   // Through the model's batched forms where it has them (bsdf_model.h).
-  void sampleBatch(pcg32& rng, std::span<std::optional<Point2d>> out, Audit& audit) const override;
+  void sampleBatch(pcg32& rng, std::vector<std::optional<Point2d>>& out,
+                   Audit& audit) const override;
   bool batchedPdf() const override { return bool(model_.pdfBatch); }
-  void pdfBatch(std::span<const Point2d> points, std::span<double> values) const override;
+  void pdfBatch(const std::vector<Point2d>& points, std::vector<double>& values) const override;
   void extraChecks(Audit& audit) const override;
   // The shading horizon and, for a transmitter, where refraction ends.
   std::vector<double> breakpointsY(double phi) const override;

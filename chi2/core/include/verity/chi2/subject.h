@@ -7,7 +7,6 @@
 
 #include <optional>
 #include <pcg_random.hpp>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -28,10 +27,11 @@ class Subject {
   // must draw from rng as n calls of sample() would (the default is those calls), and, where
   // batchedPdf(), integrates the density through pdfBatch (batched_density.h), with the same
   // cell probabilities as pdf() point by point.
-  virtual void sampleBatch(pcg32& rng, std::span<std::optional<Point2d>> out, Audit& audit) const;
+  virtual void sampleBatch(pcg32& rng, std::vector<std::optional<Point2d>>& out,
+                           Audit& audit) const;
   virtual bool batchedPdf() const { return false; }
   // values[k] = pdf(points[k]); the default calls pdf().
-  virtual void pdfBatch(std::span<const Point2d> points, std::span<double> values) const;
+  virtual void pdfBatch(const std::vector<Point2d>& points, std::vector<double>& values) const;
   // Where the density may jump inside the domain along y at abscissa x (e.g. a shading
   // horizon that crosses cells): the inner quadrature splits there instead of refining a
   // discontinuity to its maximum depth.

@@ -17,7 +17,6 @@
 #include <Eigen/Core>
 #include <functional>
 #include <optional>
-#include <span>
 #include <vector>
 
 namespace verity::chi2 {
@@ -38,9 +37,11 @@ struct WarpModel {
   // sample(u[k]) and values[k] = pdf(points[k]). Where set, the check draws each chunk of
   // samples, or integrates the density a refinement level at a time (batched_density.h),
   // through them.
-  std::function<void(std::span<const Uniform2> u, std::span<std::optional<Eigen::Vector3d>> out)>
+  std::function<void(const std::vector<Uniform2>& u,
+                     std::vector<std::optional<Eigen::Vector3d>>& out)>
       sampleBatch;
-  std::function<void(std::span<const Eigen::Vector3d> points, std::span<double> values)> pdfBatch;
+  std::function<void(const std::vector<Eigen::Vector3d>& points, std::vector<double>& values)>
+      pdfBatch;
 };
 
 bool isDirectional(WarpDomain domain);

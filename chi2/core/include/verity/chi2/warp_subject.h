@@ -17,9 +17,10 @@ class WarpSubject : public Subject {
   const Domain& domain() const override { return domain_; }
   double pdf(double x, double y) const override;
   std::optional<Point2d> sample(pcg32& rng, Audit& audit) const override;
-  void sampleBatch(pcg32& rng, std::span<std::optional<Point2d>> out, Audit& audit) const override;
+  void sampleBatch(pcg32& rng, std::vector<std::optional<Point2d>>& out,
+                   Audit& audit) const override;
   bool batchedPdf() const override { return bool(model_.pdfBatch); }
-  void pdfBatch(std::span<const Point2d> points, std::span<double> values) const override;
+  void pdfBatch(const std::vector<Point2d>& points, std::vector<double>& values) const override;
   std::vector<double> breakpointsY(double x) const override;
   std::string describe() const override { return name_; }
 
