@@ -45,13 +45,87 @@ double BsdfModelSubject::pdf(double phi, double z) const {
   return model_.pdf(setup_.wi, setup_.frame.toLocal(sphereDirectionAtLastAzimuth(phi, z)));
 }
 
-std::optional<Point2d> BsdfModelSubject::sample(pcg32& rng, Audit& audit) const {
-  const Vector3d& wi = setup_.wi;
+namespace {
+
+BsdfUniforms drawUniforms(pcg32& rng) {
   BsdfUniforms u;
   u.lobe = uniform01(rng);
   u.xy.x = uniform01(rng);
   u.xy.y = uniform01(rng);
-  const std::optional<DirectionSample> s = model_.sample(wi, u);
+  return u;
+}
+
+}  // namespace
+
+bool BsdfModelSubject::evaluable(const std::optional<DirectionSample>& s) {
+  return s && !s->delta && s->pdf != 0 && s->wo.allFinite() && std::fabs(s->wo.norm() - 1) <= 1e-3;
+}
+
+std::optional<Point2d> BsdfModelSubject::sample(pcg32& rng, Audit& audit) const {
+  const BsdfUniforms u = drawUniforms(rng);
+  const Vector3d& wi = setup_.wi;
+  struct PointByPoint {
+    const BsdfModelSubject& s;
+    Eigen::ArrayXd eval(const Vector3d& wo) const { return s.model_.eval(s.setup_.wi, wo); }
+    double pdf(const Vector3d& wo) const { return s.model_.pdf(s.setup_.wi, wo); }
+    Eigen::ArrayXd reversed(const Vector3d& wo) const { return s.model_.eval(wo, s.setup_.wi); }
+  };
+  return audited(u, model_.sample(wi, u), PointByPoint{*this}, audit);
+}
+
+void BsdfModelSubject::sampleBatch(pcg32& rng, std::vector<std::optional<Point2d>>& out,
+                                   Audit& audit) const {
+  if (!model_.sampleBatch || !model_.evalBatch) return Subject::sampleBatch(rng, out, audit);
+  const Vector3d& wi = setup_.wi;
+  std::vector<BsdfUniforms> us(out.size());
+  for (BsdfUniforms& u : us) u = drawUniforms(rng);
+  std::vector<std::optional<DirectionSample>> drawn(out.size());
+  model_.sampleBatch(wi, us, drawn);
+  // The directions to evaluate, each evaluation in one batch.
+  std::vector<size_t> index(out.size(), 0);
+  std::vector<Vector3d> wos;
+  for (size_t k = 0; k < drawn.size(); ++k)
+    if (evaluable(drawn[k])) {
+      index[k] = wos.size();
+      wos.push_back(drawn[k]->wo);
+    }
+  const std::vector<Vector3d> one{wi};
+  std::vector<Eigen::ArrayXd> f(wos.size()), fr(setup_.checkReciprocity ? wos.size() : 0);
+  std::vector<double> p(wos.size());
+  if (!wos.empty()) {
+    model_.evalBatch(one, wos, f);
+    if (model_.pdfBatch)
+      model_.pdfBatch(wi, wos, p);
+    else
+      for (size_t k = 0; k < wos.size(); ++k) p[k] = model_.pdf(wi, wos[k]);
+    if (setup_.checkReciprocity) model_.evalBatch(wos, one, fr);
+  }
+  struct Batch {
+    const std::vector<Eigen::ArrayXd>& f;
+    const std::vector<double>& p;
+    const std::vector<Eigen::ArrayXd>& fr;
+    size_t k;
+    Eigen::ArrayXd eval(const Vector3d&) const { return f[k]; }
+    double pdf(const Vector3d&) const { return p[k]; }
+    Eigen::ArrayXd reversed(const Vector3d&) const { return fr[k]; }
+  };
+  for (size_t k = 0; k < out.size(); ++k)
+    out[k] = audited(us[k], drawn[k], Batch{f, p, fr, index[k]}, audit);
+}
+
+void BsdfModelSubject::pdfBatch(const std::vector<Point2d>& points,
+                                std::vector<double>& values) const {
+  std::vector<Vector3d> wos(points.size());
+  for (size_t k = 0; k < points.size(); ++k)
+    wos[k] = setup_.frame.toLocal(sphereDirectionAtLastAzimuth(points[k].x(), points[k].y()));
+  model_.pdfBatch(setup_.wi, wos, values);
+}
+
+template <class Values>
+std::optional<Point2d> BsdfModelSubject::audited(const BsdfUniforms& u,
+                                                 const std::optional<DirectionSample>& s,
+                                                 const Values& values, Audit& audit) const {
+  const Vector3d& wi = setup_.wi;
   if (!s) return std::nullopt;
   if (s->delta) {
     ++delta_;
@@ -72,7 +146,7 @@ std::optional<Point2d> BsdfModelSubject::sample(pcg32& rng, Audit& audit) const 
     return std::nullopt;
   }
   const Vector3d& wo = s->wo;
-  const Eigen::ArrayXd f = model_.eval(wi, wo);
+  const Eigen::ArrayXd f = values.eval(wo);
   if (!sized(s->weight, "weight", at, audit) || !sized(f, "eval", at, audit))
     return sphereCoords(setup_.frame.toWorld(wo));
   if (!s->weight.allFinite() || !std::isfinite(s->pdf))
@@ -83,7 +157,7 @@ std::optional<Point2d> BsdfModelSubject::sample(pcg32& rng, Audit& audit) const 
                  fmt::format("weight {} pdf {} (a returned sample needs pdf > 0) at {}",
                              format(s->weight), s->pdf, at()));
 
-  const double p = model_.pdf(wi, wo);
+  const double p = values.pdf(wo);
   if (!f.allFinite() || !std::isfinite(p))
     audit.record(Defect::NonFinite, fmt::format("eval {} pdf() {} at {}", format(f), p, at()));
   else if (!(f >= 0).all() || p < 0)
@@ -110,15 +184,14 @@ std::optional<Point2d> BsdfModelSubject::sample(pcg32& rng, Audit& audit) const 
                                format(s->weight), format(expected), component(worst),
                                s->weight[worst] / expected[worst], tolerance, at()));
   }
-  if (setup_.checkReciprocity) checkReciprocity(wo, f, audit);
+  if (setup_.checkReciprocity) checkReciprocity(wo, f, values.reversed(wo), audit);
   return sphereCoords(setup_.frame.toWorld(wo));
 }
 
 void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd& f,
-                                        Audit& audit) const {
+                                        const Eigen::ArrayXd& fr, Audit& audit) const {
   const Vector3d& wi = setup_.wi;
   auto where = [&] { return fmt::format("wi={} wo={}", str(wi), str(wo)); };
-  const Eigen::ArrayXd fr = model_.eval(wo, wi);
   const Eigen::ArrayXd fi = model_.evalAdjoint ? model_.evalAdjoint(wi, wo) : fr;
   if (!sized(fr, "eval(wo,wi)", where, audit) || !sized(fi, "evalAdjoint", where, audit)) return;
   const double etaI = indexOn(wi), etaO = indexOn(wo);
@@ -182,13 +255,23 @@ std::vector<Point2d> BsdfModelSubject::peaks() const {
 
 void BsdfModelSubject::extraChecks(Audit& audit) const {
   // eval at every cell centre: finite and non-negative everywhere, not only where sampled.
+  std::vector<Vector3d> wos(domain_.cells());
   for (int c = 0; c < domain_.cells(); ++c) {
     const double phi = (c % domain_.nx + 0.5) * domain_.cellWidth();
     const double z = -1 + (c / domain_.nx + 0.5) * domain_.cellHeight();
-    const Vector3d wo = setup_.frame.toLocal(sphereDirection(phi, z));
+    wos[c] = setup_.frame.toLocal(sphereDirection(phi, z));
+  }
+  std::vector<Eigen::ArrayXd> batch;
+  if (model_.evalBatch) {
+    batch.resize(wos.size());
+    model_.evalBatch(std::vector<Vector3d>{setup_.wi}, wos, batch);
+  }
+  for (size_t c = 0; c < wos.size(); ++c) {
+    const Vector3d& wo = wos[c];
     for (const BsdfModel::EvalFn* eval : {&model_.eval, &model_.evalAdjoint}) {
-      if (!*eval) continue;
-      const Eigen::ArrayXd f = (*eval)(setup_.wi, wo);
+      if (!*eval && !(eval == &model_.eval && model_.evalBatch)) continue;
+      const Eigen::ArrayXd f =
+          eval == &model_.eval && model_.evalBatch ? batch[c] : (*eval)(setup_.wi, wo);
       auto where = [&] { return fmt::format("wi={} wo={}", str(setup_.wi), str(wo)); };
       if (!sized(f, "eval", where, audit)) continue;
       if (!validValue(f))

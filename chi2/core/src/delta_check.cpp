@@ -121,14 +121,18 @@ DeltaCheck checkDeltaLobes(const BsdfModel& model, const Eigen::Vector3d& wi,
     pcg32 rng(seed, kFirstStream + static_cast<uint64_t>(c));
     Partial& p = partial[c];
     if (model.components > 0) p.size(model.components);
-    const long long n = std::min(kChunk, samples - c * kChunk);
-    for (long long k = 0; k < n; ++k) {
+    std::vector<BsdfUniforms> us(std::min(kChunk, samples - c * kChunk));
+    for (BsdfUniforms& u : us) {
       // The draws of BsdfModelSubject::sample: lobe, xy.x, xy.y.
-      BsdfUniforms u;
       u.lobe = uniform01(rng);
       u.xy.x = uniform01(rng);
       u.xy.y = uniform01(rng);
-      const std::optional<DirectionSample> s = model.sample(wi, u);
+    }
+    std::vector<std::optional<DirectionSample>> drawn(us.size());
+    sampleDirections(model, wi, us, drawn);
+    for (size_t k = 0; k < us.size(); ++k) {
+      const BsdfUniforms& u = us[k];
+      const std::optional<DirectionSample>& s = drawn[k];
       if (!s || !s->delta) continue;
       auto at = [&] {
         return fmt::format("wi=({:.7g}) u=({}, {}, {}) wo=({:.7g})",

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace verity::chi2 {
@@ -223,56 +224,109 @@ std::vector<double> equalMassEdges(const Cumulative& cdf, double lo, double hi, 
 
 }  // namespace
 
-Domain equalProbabilityCells(const Domain& grid, const DensityFn& f,
-                             const DensityFeatures& features, const QuadratureOptions& options) {
-  const QuadratureOptions loose = inversionOptions(options);
-  // Accurately: as integrateGrid integrates a cell, to a grid cell's share of the budget.
-  QuadratureOptions accurate = options;
-  accurate.cellAbsTolerance = options.gridAbsTolerance / grid.cells();
-  auto integral = [&](double xa, double xb, double ya, double yb, bool exact) {
-    return integrateRectangle(f, features, grid, {xa, xb, ya, yb}, exact ? accurate : loose).value;
-  };
-  const Cumulative marginal(massPieces(
-      [&](double a, double b, bool accurate) { return integral(a, b, grid.y0, grid.y1, accurate); },
-      grid.x0, grid.x1, grid.nx, features.breaksX, std::numeric_limits<double>::infinity()));
-  if (!(marginal.total() > 0 && std::isfinite(marginal.total()))) {
-    Domain d = grid;
-    d.gridReason = fmt::format(
-        "equal-probability cells need mass to follow, but the quadrature found {:.3g}: the "
-        "claimed pdf integrates to 0, or a lobe lies between the rule's nodes (declare it: "
-        "Subject::peaks)",
-        marginal.total());
-    return d;
+namespace {
+
+// What the inversion integrates: the loose rule, or the grid's accurate one (as integrateGrid
+// integrates a cell, to a grid cell's share of the budget).
+struct Integrals {
+  const Domain& grid;
+  const DensityFeatures& features;
+  QuadratureOptions loose, accurate;
+
+  Integrals(const Domain& g, const DensityFeatures& f, const QuadratureOptions& options)
+      : grid(g), features(f), loose(inversionOptions(options)), accurate(options) {
+    accurate.cellAbsTolerance = options.gridAbsTolerance / grid.cells();
   }
+  double operator()(const DensityFn& f, double xa, double xb, double ya, double yb,
+                    bool exact) const {
+    return integrateRectangle(f, features, grid, {xa, xb, ya, yb}, exact ? accurate : loose).value;
+  }
+};
+
+// The marginal distribution in x.
+Cumulative marginalOf(const Integrals& integral, const DensityFn& f) {
+  const Domain& grid = integral.grid;
+  return Cumulative(
+      massPieces([&](double a, double b,
+                     bool accurate) { return integral(f, a, b, grid.y0, grid.y1, accurate); },
+                 grid.x0, grid.x1, grid.nx, integral.features.breaksX,
+                 std::numeric_limits<double>::infinity()));
+}
+
+// The grid where the marginal has no mass to follow, saying so.
+std::optional<Domain> withoutMass(const Domain& grid, const Cumulative& marginal) {
+  if (marginal.total() > 0 && std::isfinite(marginal.total())) return std::nullopt;
+  Domain d = grid;
+  d.gridReason = fmt::format(
+      "equal-probability cells need mass to follow, but the quadrature found {:.3g}: the "
+      "claimed pdf integrates to 0, or a lobe lies between the rule's nodes (declare it: "
+      "Subject::peaks)",
+      marginal.total());
+  return d;
+}
+
+// The cells' x edges, with room for every strip's y edges.
+Domain stripsOf(const Domain& grid, const Cumulative& marginal) {
   Domain d = grid;
   d.xEdges = equalMassEdges(marginal, grid.x0, grid.x1, grid.nx);
   d.yEdges.resize(static_cast<size_t>(grid.nx) * (grid.ny + 1));
-  tbb::parallel_for(0, grid.nx, [&](int i) {
-    const double xa = d.xEdges[i], xb = d.xEdges[i + 1];
-    // The strip's conditional distribution over the support's extent; its jumps taken at
-    // the strip's middle (where they move with x, the cells follow them approximately).
-    const auto [lo, hi] = grid.supportY(xa, xb);
-    std::vector<double> cuts;
-    if (features.breaksY) cuts = features.breaksY(0.5 * (xa + xb));
-    std::vector<double> edges;
-    if (xb > xa && hi > lo) {
-      const Cumulative conditional(massPieces(
-          [&](double a, double b, bool accurate) { return integral(xa, xb, a, b, accurate); }, lo,
-          hi, grid.ny, cuts, marginal.at(xb) - marginal.at(xa)));
-      if (conditional.total() > 0) edges = equalMassEdges(conditional, lo, hi, grid.ny);
-    }
-    if (edges.empty())  // a strip without mass: the grid's edges
-      for (int j = 0; j <= grid.ny; ++j) edges.push_back(grid.yEdge(i, j));
-    // The end cells reach the rectangle's edges, so that every point of it has a cell.
-    edges.front() = grid.y0;
-    edges.back() = grid.y1;
-    std::copy(edges.begin(), edges.end(),
-              d.yEdges.begin() + static_cast<size_t>(i) * (grid.ny + 1));
-  });
+  return d;
+}
+
+// Strip i's y edges in d.
+void cutStrip(const Integrals& integral, const DensityFn& f, const Cumulative& marginal, int i,
+              Domain& d) {
+  const Domain& grid = integral.grid;
+  const double xa = d.xEdges[i], xb = d.xEdges[i + 1];
+  // The strip's conditional distribution over the support's extent; its jumps taken at
+  // the strip's middle (where they move with x, the cells follow them approximately).
+  const auto [lo, hi] = grid.supportY(xa, xb);
+  std::vector<double> cuts;
+  if (integral.features.breaksY) cuts = integral.features.breaksY(0.5 * (xa + xb));
+  std::vector<double> edges;
+  if (xb > xa && hi > lo) {
+    const Cumulative conditional(massPieces(
+        [&](double a, double b, bool accurate) { return integral(f, xa, xb, a, b, accurate); }, lo,
+        hi, grid.ny, cuts, marginal.at(xb) - marginal.at(xa)));
+    if (conditional.total() > 0) edges = equalMassEdges(conditional, lo, hi, grid.ny);
+  }
+  if (edges.empty())  // a strip without mass: the grid's edges
+    for (int j = 0; j <= grid.ny; ++j) edges.push_back(grid.yEdge(i, j));
+  // The end cells reach the rectangle's edges, so that every point of it has a cell.
+  edges.front() = grid.y0;
+  edges.back() = grid.y1;
+  std::copy(edges.begin(), edges.end(), d.yEdges.begin() + static_cast<size_t>(i) * (grid.ny + 1));
+}
+
+}  // namespace
+
+Domain equalProbabilityCells(const Domain& grid, const DensityFn& f,
+                             const DensityFeatures& features, const QuadratureOptions& options) {
+  const Integrals integral(grid, features, options);
+  const Cumulative marginal = marginalOf(integral, f);
+  if (auto d = withoutMass(grid, marginal)) return *d;
+  Domain d = stripsOf(grid, marginal);
+  tbb::parallel_for(0, grid.nx, [&](int i) { cutStrip(integral, f, marginal, i, d); });
+  return d;
+}
+
+Domain equalProbabilityCells(const Domain& grid, BatchedDensity& f, const DensityFeatures& features,
+                             const QuadratureOptions& options) {
+  const Integrals integral(grid, features, options);
+  std::optional<Cumulative> marginal;
+  f.run([&](const DensityFn& pdf) { marginal = marginalOf(integral, pdf); });
+  if (auto d = withoutMass(grid, *marginal)) return *d;
+  Domain d = stripsOf(grid, *marginal);
+  f.run(grid.nx, [&](int i, const DensityFn& pdf) { cutStrip(integral, pdf, *marginal, i, d); });
   return d;
 }
 
 Domain cellsFor(const Domain& grid, CellLayout layout, const DensityFn& f,
+                const DensityFeatures& features, const QuadratureOptions& options) {
+  return layout == CellLayout::Grid ? grid : equalProbabilityCells(grid, f, features, options);
+}
+
+Domain cellsFor(const Domain& grid, CellLayout layout, BatchedDensity& f,
                 const DensityFeatures& features, const QuadratureOptions& options) {
   return layout == CellLayout::Grid ? grid : equalProbabilityCells(grid, f, features, options);
 }

@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
+#include <verity/chi2/batched_density.h>
 #include <verity/chi2/sampling_check.h>
 
 #include <atomic>
@@ -77,8 +78,7 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   std::atomic<long long> badPdf{0}, negativePdf{0};
   std::mutex exampleMutex;
   std::string badExample;
-  DensityFn pdf = [&](double x, double y) {
-    const double v = subject.pdf(x, y);
+  auto checked = [&](double v, double x, double y) {
     if (std::isfinite(v) && v >= 0) return v;
     (std::isfinite(v) ? negativePdf : badPdf)++;
     std::lock_guard lock(exampleMutex);
@@ -88,12 +88,28 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   };
   const DensityFeatures features{[&](double x) { return subject.breakpointsY(x); },
                                  subject.breakpointsX(), subject.peaks()};
-  // The cells, cut from the subject's domain: equal-probability cells follow the claimed pdf
-  // (partition.h).
-  r.domain = cellsFor(subject.domain(), options.cells, pdf, features, options.quadrature);
+  // The cells, cut from the subject's domain (equal-probability cells follow the claimed pdf:
+  // partition.h), and the claimed density over each; through batches of points where the
+  // subject evaluates its density so, with the same figures (batched_density.h).
+  std::vector<CellIntegral> integrals;
+  if (subject.batchedPdf()) {
+    BatchedDensity batched([&](const std::vector<Point2d>& points, std::vector<double>& values) {
+      subject.pdfBatch(points, values);
+      for (size_t k = 0; k < points.size(); ++k)
+        values[k] = checked(values[k], points[k].x(), points[k].y());
+    });
+    r.domain = cellsFor(subject.domain(), options.cells, batched, features, options.quadrature);
+    integrals.resize(r.domain.cells());
+    batched.run(r.domain.cells(), [&](int cell, const DensityFn& pdf) {
+      integrals[cell] = integrateCell(pdf, features, r.domain, cell, options.quadrature);
+    });
+  } else {
+    const DensityFn pdf = [&](double x, double y) { return checked(subject.pdf(x, y), x, y); };
+    r.domain = cellsFor(subject.domain(), options.cells, pdf, features, options.quadrature);
+    integrals = integrateGrid(pdf, r.domain, options.quadrature, features);
+  }
   const Domain& d = r.domain;
   const int cells = d.cells();
-  const std::vector<CellIntegral> integrals = integrateGrid(pdf, d, options.quadrature, features);
   r.probability.resize(cells);
   double total = 0;
   for (int i = 0; i < cells; ++i) {
@@ -124,9 +140,9 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   tbb::parallel_for(0LL, chunks, [&](long long c) {
     pcg32 rng(options.seed, static_cast<uint64_t>(c));
     std::vector<long long> hist(cells, 0);
-    const long long n = std::min(kChunk, r.samples - c * kChunk);
-    for (long long k = 0; k < n; ++k) {
-      const std::optional<Point2d> p = subject.sample(rng, audits[c]);
+    std::vector<std::optional<Point2d>> points(std::min(kChunk, r.samples - c * kChunk));
+    subject.sampleBatch(rng, points, audits[c]);
+    for (const std::optional<Point2d>& p : points) {
       if (!p) continue;
       ++validPerChunk[c];
       const int cell = d.cellOf(*p);

@@ -33,16 +33,48 @@ WarpSubject::WarpSubject(std::string name, WarpModel model, int resolution)
       model_(std::move(model)),
       domain_(domainOf(model_.domain, resolution)) {}
 
-double WarpSubject::pdf(double x, double y) const {
-  return model_.pdf(isDirectional(model_.domain) ? sphereDirectionAtLastAzimuth(x, y)
-                                                 : Vector3d(x, y, 0));
+Vector3d WarpSubject::point(double x, double y) const {
+  return isDirectional(model_.domain) ? sphereDirectionAtLastAzimuth(x, y) : Vector3d(x, y, 0);
 }
 
-std::optional<Point2d> WarpSubject::sample(pcg32& rng, Audit& audit) const {
+double WarpSubject::pdf(double x, double y) const {
+  return model_.pdf(point(x, y));
+}
+
+void WarpSubject::pdfBatch(const std::vector<Point2d>& points, std::vector<double>& values) const {
+  std::vector<Vector3d> p(points.size());
+  for (size_t k = 0; k < points.size(); ++k) p[k] = point(points[k].x(), points[k].y());
+  model_.pdfBatch(p, values);
+}
+
+namespace {
+
+Uniform2 drawUniforms(pcg32& rng) {
   Uniform2 u;
   u.x = uniform01(rng);
   u.y = uniform01(rng);
-  const std::optional<Vector3d> p = model_.sample(u);
+  return u;
+}
+
+}  // namespace
+
+std::optional<Point2d> WarpSubject::sample(pcg32& rng, Audit& audit) const {
+  const Uniform2 u = drawUniforms(rng);
+  return audited(u, model_.sample(u), audit);
+}
+
+void WarpSubject::sampleBatch(pcg32& rng, std::vector<std::optional<Point2d>>& out,
+                              Audit& audit) const {
+  if (!model_.sampleBatch) return Subject::sampleBatch(rng, out, audit);
+  std::vector<Uniform2> us(out.size());
+  for (Uniform2& u : us) u = drawUniforms(rng);
+  std::vector<std::optional<Vector3d>> drawn(out.size());
+  model_.sampleBatch(us, drawn);
+  for (size_t k = 0; k < out.size(); ++k) out[k] = audited(us[k], drawn[k], audit);
+}
+
+std::optional<Point2d> WarpSubject::audited(const Uniform2& u, const std::optional<Vector3d>& p,
+                                            Audit& audit) const {
   if (!p) return std::nullopt;
   if (!p->allFinite()) {
     audit.record(Defect::NonFinite, fmt::format("sampled point ({}, {}, {}) at u=({}, {})", p->x(),

@@ -44,6 +44,8 @@ class Audit {
   void record(Defect d, double deviation, const std::string& example);
   void merge(const Audit& other);
   long long count(Defect d) const { return counts_[static_cast<int>(d)]; }
+  // The first example recorded for d; "" when none was.
+  const std::string& example(Defect d) const { return examples_[static_cast<int>(d)]; }
   // The largest deviation recorded for d, and where; 0 and "" when none was.
   double worst(Defect d) const { return worst_[static_cast<int>(d)]; }
   const std::string& worstExample(Defect d) const { return worstExamples_[static_cast<int>(d)]; }

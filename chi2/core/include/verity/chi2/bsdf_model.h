@@ -27,6 +27,7 @@
 #include <Eigen/Core>
 #include <functional>
 #include <optional>
+#include <vector>
 
 namespace verity::chi2 {
 
@@ -48,6 +49,25 @@ struct BsdfModel {
   EvalFn eval;
   PdfFn pdf;
   EvalFn evalAdjoint;  // optional
+
+  // Optional batched forms, one call for many directions (SIMD or GPU code, NumPy): where
+  // sampleBatch and evalBatch are set, the check draws its samples and evaluates them through
+  // them; where pdfBatch is set, the quadrature calls it with every node of a refinement level
+  // at once (batched_density.h). sample, eval and pdf are still needed where these are not
+  // (the delta lobes' own checks, a sample's reversed evaluation through evalAdjoint).
+  using SampleBatchFn =
+      std::function<void(const Eigen::Vector3d& wi, const std::vector<BsdfUniforms>& u,
+                         std::vector<std::optional<DirectionSample>>& out)>;
+  // wi holds one direction for every wo, or one direction per wo (the reversed evaluations
+  // of the reciprocity check).
+  using EvalBatchFn =
+      std::function<void(const std::vector<Eigen::Vector3d>& wi,
+                         const std::vector<Eigen::Vector3d>& wo, std::vector<Eigen::ArrayXd>& out)>;
+  using PdfBatchFn = std::function<void(
+      const Eigen::Vector3d& wi, const std::vector<Eigen::Vector3d>& wo, std::vector<double>& out)>;
+  SampleBatchFn sampleBatch;
+  EvalBatchFn evalBatch;
+  PdfBatchFn pdfBatch;
   // Entries in every value; 0 where only run time tells (a std::vector, an Eigen::VectorXd):
   // checkBsdf then takes the size of eval at wi's mirror direction.
   int components = 3;
@@ -57,5 +77,10 @@ struct BsdfModel {
   // where it is not 1.
   double relativeIndex() const { return interiorIndex / exteriorIndex; }
 };
+
+// out[k] = model.sample(wi, u[k]): one call of sampleBatch where the model has it.
+void sampleDirections(const BsdfModel& model, const Eigen::Vector3d& wi,
+                      const std::vector<BsdfUniforms>& u,
+                      std::vector<std::optional<DirectionSample>>& out);
 
 }  // namespace verity::chi2

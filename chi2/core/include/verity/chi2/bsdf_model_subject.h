@@ -40,6 +40,11 @@ class BsdfModelSubject : public Subject {
   const Domain& domain() const override { return domain_; }
   double pdf(double phi, double z) const override;
   std::optional<Point2d> sample(pcg32& rng, Audit& audit) const override;
+  // Through the model's batched forms where it has them (bsdf_model.h).
+  void sampleBatch(pcg32& rng, std::vector<std::optional<Point2d>>& out,
+                   Audit& audit) const override;
+  bool batchedPdf() const override { return bool(model_.pdfBatch); }
+  void pdfBatch(const std::vector<Point2d>& points, std::vector<double>& values) const override;
   void extraChecks(Audit& audit) const override;
   // The shading horizon and, for a transmitter, where refraction ends.
   std::vector<double> breakpointsY(double phi) const override;
@@ -55,8 +60,18 @@ class BsdfModelSubject : public Subject {
   const Vector3d& localWi() const { return setup_.wi; }
 
  private:
-  // f: eval(wi, wo), already computed by sample().
-  void checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd& f, Audit& audit) const;
+  // The per-sample checks of the sample s drawn with u; eval(wi, wo), pdf(wi, wo) and
+  // eval(wo, wi) come from `values` (point by point, or a batch's), asked for only for a
+  // sample that needs them (evaluable).
+  template <class Values>
+  std::optional<Point2d> audited(const BsdfUniforms& u, const std::optional<DirectionSample>& s,
+                                 const Values& values, Audit& audit) const;
+  // Whether the sample is a direction to evaluate: drawn, not a delta lobe, of a non-zero
+  // density, finite and of unit length.
+  static bool evaluable(const std::optional<DirectionSample>& s);
+  // f: eval(wi, wo), fr: eval(wo, wi), already computed.
+  void checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd& f, const Eigen::ArrayXd& fr,
+                        Audit& audit) const;
   // Whether v has the model's number of components; records the defect where not, at
   // where() (formatted only then).
   template <class Where>

@@ -22,6 +22,16 @@ class Subject {
   // One sample in domain coordinates, or nothing when the sampler declines (an invalid
   // sample). Per-sample defects go to `audit`; thread-safe with one rng/audit per thread.
   virtual std::optional<Point2d> sample(pcg32& rng, Audit& audit) const = 0;
+  // Batched forms, for a sampler or density whose cost is in the call (SIMD or GPU code, a
+  // NumPy function): runSamplingTest draws each chunk of samples with one sampleBatch, which
+  // must draw from rng as n calls of sample() would (the default is those calls), and, where
+  // batchedPdf(), integrates the density through pdfBatch (batched_density.h), with the same
+  // cell probabilities as pdf() point by point.
+  virtual void sampleBatch(pcg32& rng, std::vector<std::optional<Point2d>>& out,
+                           Audit& audit) const;
+  virtual bool batchedPdf() const { return false; }
+  // values[k] = pdf(points[k]); the default calls pdf().
+  virtual void pdfBatch(const std::vector<Point2d>& points, std::vector<double>& values) const;
   // Where the density may jump inside the domain along y at abscissa x (e.g. a shading
   // horizon that crosses cells): the inner quadrature splits there instead of refining a
   // discontinuity to its maximum depth.

@@ -33,6 +33,15 @@ struct WarpModel {
   // the values of cos θ at azimuth φ, e.g. the rim of a spherical cap), so that the
   // quadrature splits there rather than refining a discontinuity.
   std::function<std::vector<double>(double x)> breakpointsY;
+  // Optional batched forms, one call for many points (SIMD or GPU code, NumPy): out[k] =
+  // sample(u[k]) and values[k] = pdf(points[k]). Where set, the check draws each chunk of
+  // samples, or integrates the density a refinement level at a time (batched_density.h),
+  // through them.
+  std::function<void(const std::vector<Uniform2>& u,
+                     std::vector<std::optional<Eigen::Vector3d>>& out)>
+      sampleBatch;
+  std::function<void(const std::vector<Eigen::Vector3d>& points, std::vector<double>& values)>
+      pdfBatch;
 };
 
 bool isDirectional(WarpDomain domain);

@@ -17,10 +17,19 @@ class WarpSubject : public Subject {
   const Domain& domain() const override { return domain_; }
   double pdf(double x, double y) const override;
   std::optional<Point2d> sample(pcg32& rng, Audit& audit) const override;
+  void sampleBatch(pcg32& rng, std::vector<std::optional<Point2d>>& out,
+                   Audit& audit) const override;
+  bool batchedPdf() const override { return bool(model_.pdfBatch); }
+  void pdfBatch(const std::vector<Point2d>& points, std::vector<double>& values) const override;
   std::vector<double> breakpointsY(double x) const override;
   std::string describe() const override { return name_; }
 
  private:
+  Vector3d point(double x, double y) const;
+  // The checks of a sampled point p drawn with u, and where it lies on the domain.
+  std::optional<Point2d> audited(const Uniform2& u, const std::optional<Vector3d>& p,
+                                 Audit& audit) const;
+
   std::string name_;
   WarpModel model_;
   Domain domain_;

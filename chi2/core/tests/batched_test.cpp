@@ -1,0 +1,150 @@
+// The batched forms (batched_density.h, BsdfModel's and WarpModel's *Batch callables): a
+// model given them is checked exactly as it is point by point (the same cell probabilities
+// bit for bit, the same histogram, the same verdict and report), in few calls.
+//
+// Level: each comparison runs one check of two statistical tests at 1% per test; the tests
+// here compare the two paths' figures, not the verdict's power, hence 2·10⁴ samples in few
+// cells.
+#include <gtest/gtest.h>
+#include <verity/chi2/batched_density.h>
+#include <verity/chi2/bsdf_adapter.h>
+#include <verity/chi2/warp_adapter.h>
+
+#include <atomic>
+#include <cmath>
+#include <numbers>
+
+#include "lambert_toy.h"
+#include "phong_toy.h"
+
+namespace verity::chi2 {
+
+namespace {
+
+using phong_toy::Vec3;
+
+BsdfModel phong(phong_toy::Flaw flaw) {
+  const phong_toy::Phong p(20.5, flaw);
+  return bsdfModel<Vec3>(
+      [p](const Vec3& wi, const BsdfUniforms& u) { return p.sample(wi, u.xy.x, u.xy.y); },
+      [p](const Vec3& wi, const Vec3& wo) { return p.eval(wi, wo); },
+      [p](const Vec3& wi, const Vec3& wo) { return p.pdf(wi, wo); });
+}
+
+// The model's own callables behind batched forms that count their calls.
+struct Calls {
+  std::atomic<int> sample{0}, eval{0}, pdf{0};
+};
+
+BsdfModel batched(BsdfModel m, Calls& calls) {
+  const BsdfModel point = m;
+  m.sampleBatch = [point, &calls](const Eigen::Vector3d& wi, const std::vector<BsdfUniforms>& u,
+                                  std::vector<std::optional<DirectionSample>>& out) {
+    ++calls.sample;
+    for (size_t k = 0; k < u.size(); ++k) out[k] = point.sample(wi, u[k]);
+  };
+  m.evalBatch = [point, &calls](const std::vector<Eigen::Vector3d>& wi,
+                                const std::vector<Eigen::Vector3d>& wo,
+                                std::vector<Eigen::ArrayXd>& out) {
+    ++calls.eval;
+    for (size_t k = 0; k < out.size(); ++k)
+      out[k] = point.eval(wi[wi.size() == 1 ? 0 : k], wo[wo.size() == 1 ? 0 : k]);
+  };
+  m.pdfBatch = [point, &calls](const Eigen::Vector3d& wi, const std::vector<Eigen::Vector3d>& wo,
+                               std::vector<double>& out) {
+    ++calls.pdf;
+    for (size_t k = 0; k < wo.size(); ++k) out[k] = point.pdf(wi, wo[k]);
+  };
+  m.sample = nullptr;  // the check must not fall back on the point-by-point forms
+  m.pdf = nullptr;
+  return m;
+}
+
+BsdfCheckOptions options(const std::string& name, CellLayout cells) {
+  BsdfCheckOptions o;
+  o.name = name;
+  o.significance = 0.01;
+  o.samples = 20'000;
+  o.cells = cells;
+  o.resolution = 8;  // 128 cells on the sphere, 64 on a plane: the paths' figures, cheaply
+  return o;
+}
+
+void expectSame(const CheckResult& a, const CheckResult& b) {
+  EXPECT_EQ(a.test.probability, b.test.probability);
+  EXPECT_EQ(a.test.observed, b.test.observed);
+  EXPECT_EQ(a.test.quadratureError, b.test.quadratureError);
+  EXPECT_EQ(a.verdict(), b.verdict());
+  EXPECT_EQ(a.test.audit.describe(), b.test.audit.describe());
+}
+
+}  // namespace
+
+TEST(BatchedDensity, GivesTheIntegralsOfThePointByPointDensityInFewBatches) {
+  const Domain d = sphereDomain(16);
+  auto f = [](double x, double y) { return std::exp(-40 * (y - 0.7) * (y - 0.7)) * (1 + x); };
+  const std::vector<CellIntegral> direct = integrateGrid(f, d, {});
+  BatchedDensity batched([&](const std::vector<Point2d>& p, std::vector<double>& v) {
+    for (size_t k = 0; k < p.size(); ++k) v[k] = f(p[k].x(), p[k].y());
+  });
+  // As one computation, and as one per cell.
+  std::vector<CellIntegral> whole, cells(d.cells());
+  batched.run([&](const DensityFn& g) { whole = integrateGrid(g, d, {}); });
+  EXPECT_LE(batched.batches(), 20);
+  batched.run(d.cells(),
+              [&](int c, const DensityFn& g) { cells[c] = integrateCell(g, {}, d, c, {}); });
+  ASSERT_EQ(whole.size(), direct.size());
+  for (size_t c = 0; c < whole.size(); ++c) {
+    EXPECT_EQ(whole[c].value, direct[c].value) << c;
+    EXPECT_EQ(whole[c].error, direct[c].error) << c;
+  }
+  ASSERT_EQ(cells.size(), direct.size());
+  for (size_t c = 0; c < cells.size(); ++c) {
+    EXPECT_EQ(cells[c].value, direct[c].value) << c;
+    EXPECT_EQ(cells[c].error, direct[c].error) << c;
+  }
+  // A pass per refinement level, inner and outer, of the pilot, coarse and verifying rules.
+  EXPECT_LE(batched.batches(), 40);
+  EXPECT_GT(batched.evaluations(), 2 * 15 * 15 * d.cells());
+}
+
+TEST(BatchedBsdf, IsCheckedAsThePointByPointModelOnEitherLayout) {
+  const Vec3 wi{0.5, 0, std::sqrt(0.75)};
+  for (CellLayout cells : {CellLayout::Grid, CellLayout::EqualProbability}) {
+    for (phong_toy::Flaw flaw : {phong_toy::Flaw::None, phong_toy::Flaw::NonReciprocal}) {
+      const std::string name = "batched phong " + cellLayoutName(cells);
+      Calls calls;
+      const CheckResult point = checkBsdf(phong(flaw), wi, options(name, cells));
+      const CheckResult batch = checkBsdf(batched(phong(flaw), calls), wi, options(name, cells));
+      SCOPED_TRACE(batch.report());
+      expectSame(point, batch);
+      EXPECT_EQ(calls.sample, 1);  // one chunk of 2·10⁴ samples
+      EXPECT_EQ(calls.eval, 3);    // the samples both ways, and the cell centres
+      EXPECT_LE(calls.pdf, 80);
+    }
+  }
+}
+
+TEST(BatchedWarp, IsCheckedAsThePointByPointModel) {
+  WarpModel m = hemisphereWarp<Vec3>(
+      [](const Uniform2& u) { return lambert_toy::cosineHemisphere(u.x, u.y); },
+      [](const Vec3& w) { return lambert_toy::cosinePdf(w); });
+  std::atomic<int> calls{0};
+  WarpModel b = m;
+  b.sampleBatch = [m, &calls](const std::vector<Uniform2>& u,
+                              std::vector<std::optional<Eigen::Vector3d>>& out) {
+    ++calls;
+    for (size_t k = 0; k < u.size(); ++k) out[k] = m.sample(u[k]);
+  };
+  b.pdfBatch = [m, &calls](const std::vector<Eigen::Vector3d>& p, std::vector<double>& v) {
+    ++calls;
+    for (size_t k = 0; k < p.size(); ++k) v[k] = m.pdf(p[k]);
+  };
+  b.sample = nullptr;
+  b.pdf = nullptr;
+  CheckOptions o = options("batched cosine hemisphere", CellLayout::EqualProbability);
+  expectSame(checkWarp(m, o), checkWarp(b, o));
+  EXPECT_LE(calls, 81);
+}
+
+}  // namespace verity::chi2

@@ -1,0 +1,28 @@
+// The keyword arguments of check_bsdf and check_warp, read into the C++ checks' options
+// (check_result.h, bsdf_adapter.h): one keyword per option, the C++ defaults as defaults.
+#pragma once
+
+#include <verity/chi2/bsdf_adapter.h>
+
+#include "callback.h"
+
+namespace verity::python {
+
+// Options every check takes: name, alpha (the per-test level, required), samples, seed,
+// resolution, power, detect ((density error, mass)), max_samples and cells ("equal" or
+// "grid"). ValueError naming the keyword for a value out of range.
+void readCheckOptions(const py::kwargs& kw, const std::string& check, chi2::CheckOptions& o);
+
+// check_bsdf's own: weight_tolerance, reciprocity_tolerance, reciprocity (bool), eta and
+// direction_tolerance of the delta lobes, and expect = {"reflection": (share, albedo), ...}
+// (either may be None).
+void readBsdfOptions(const py::kwargs& kw, const std::string& check, chi2::BsdfCheckOptions& o);
+
+// TypeError naming any keyword in kw that is not in `known`.
+void requireKnown(const py::kwargs& kw, const std::string& check,
+                  const std::vector<std::string>& known);
+
+// The keywords each reads.
+extern const std::vector<std::string> kCheckKeywords, kBsdfKeywords;
+
+}  // namespace verity::python

@@ -1,0 +1,79 @@
+"""NumPy lobes and warps for the tests, written as a user writes them (docs/python.md), and the
+example's GGX (examples/python/ggx.py)."""
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "examples", "python"))
+from ggx import Ggx  # noqa: E402,F401
+
+
+class Lambert:
+    """f = albedo/π, cosine-weighted sampling (Malley's method): pdf = cos θ/π.
+    `scale_weight` and `scale_pdf` plant a weight or a pdf() error."""
+
+    def __init__(self, albedo=0.8, scale_weight=1.0, scale_pdf=1.0):
+        self.albedo, self.scale_weight, self.scale_pdf = albedo, scale_weight, scale_pdf
+
+    def sample(self, wi, u):
+        r, phi = np.sqrt(u[:, 1]), 2 * np.pi * u[:, 2]
+        wo = np.stack([r * np.cos(phi), r * np.sin(phi), np.sqrt(np.maximum(0, 1 - u[:, 1]))], -1)
+        pdf = wo[:, 2] / np.pi
+        weight = np.full(len(u), self.albedo * self.scale_weight)
+        return wo, weight, pdf
+
+    def eval(self, wi, wo):
+        wi = np.broadcast_to(wi, wo.shape)
+        return np.where((wi[..., 2] > 0) & (wo[..., 2] > 0), self.albedo / np.pi, 0.0)
+
+    def pdf(self, wi, wo):
+        return np.where(wo[..., 2] > 0, self.scale_pdf * wo[..., 2] / np.pi, 0.0)
+
+
+def uniform_square(u):
+    return u
+
+
+def polar_disk(u, broken=False):
+    r = u[:, 0] if broken else np.sqrt(u[:, 0])
+    phi = 2 * np.pi * u[:, 1]
+    return np.stack([r * np.cos(phi), r * np.sin(phi)], -1)
+
+
+def uniform_triangle(u):
+    # Folding the square onto the triangle: b0 + b1 ≤ 1.
+    flip = u.sum(axis=1) > 1
+    return np.where(flip[:, None], 1 - u[:, ::-1], u)
+
+
+def cosine_hemisphere(u):
+    r, phi = np.sqrt(u[:, 0]), 2 * np.pi * u[:, 1]
+    return np.stack([r * np.cos(phi), r * np.sin(phi), np.sqrt(np.maximum(0, 1 - u[:, 0]))], -1)
+
+
+def uniform_sphere(u):
+    z = 1 - 2 * u[:, 0]
+    r, phi = np.sqrt(np.maximum(0, 1 - z * z)), 2 * np.pi * u[:, 1]
+    return np.stack([r * np.cos(phi), r * np.sin(phi), z], -1)
+
+
+WARPS = {
+    "square": (uniform_square, lambda p: np.ones(len(p))),
+    "disk": (polar_disk, lambda p: np.full(len(p), 1 / np.pi)),
+    "triangle": (uniform_triangle, lambda p: np.full(len(p), 2.0)),
+    "hemisphere": (cosine_hemisphere, lambda p: np.maximum(p[:, 2], 0) / np.pi),
+    "sphere": (uniform_sphere, lambda p: np.full(len(p), 1 / (4 * np.pi))),
+}
+
+
+class Counted:
+    """A callable that counts its calls and the points it was given."""
+
+    def __init__(self, function):
+        self.function, self.calls, self.points = function, 0, 0
+
+    def __call__(self, *args):
+        self.calls += 1
+        self.points += len(args[-1])
+        return self.function(*args)
