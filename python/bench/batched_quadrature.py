@@ -4,6 +4,7 @@ the same lobes written in C++ and checked through the C++ adapter point by point
 (verity_python_bench), at the checks' defaults (10⁶ samples, wi at 50°) on either cell layout.
 Not a test: it prints a table of times.
 
+    cmake --build build --target verity_python verity_python_bench
     PYTHONPATH=build/python python3 python/bench/batched_quadrature.py build/bin/verity_python_bench
 """
 import os
