@@ -16,6 +16,7 @@
 #include "cli/output_paths.h"
 #include "cli/seed_option.h"
 #include "cli/subcommand.h"
+#include "cli/verdict_command.h"
 
 namespace verity {
 
@@ -249,12 +250,8 @@ void addChi2Command(CLI::App& app, const ProcessGroup& group) {
   cmd->callback([args] {
     if (!args->seedTable && args->material.empty())
       throw CLI::RequiredError("--material (or --seed-table)");
-    int status = kBadInputStatus;
-    try {
-      status = args->seedTable ? seedTable(*args) : runOne(*args);
-    } catch (const std::exception& e) {
-      fmt::print(stderr, "verity: error: {}\n", e.what());
-    }
+    const int status =
+        runVerdictCommand([&] { return args->seedTable ? seedTable(*args) : runOne(*args); });
     if (status != kPassed) throw CLI::RuntimeError(status);
   });
 }

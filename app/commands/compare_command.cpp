@@ -11,6 +11,7 @@
 #include "cli/number_options.h"
 #include "cli/output_paths.h"
 #include "cli/subcommand.h"
+#include "cli/verdict_command.h"
 #include "core/error.h"
 #include "validation/compare/comparison_report.h"
 #include "validation/compare/distinct_files.h"
@@ -124,15 +125,6 @@ int run(const CompareArgs& args) {
   return kAgree;
 }
 
-int runReportingErrors(const CompareArgs& args) {
-  try {
-    return run(args);
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "verity: error: {}\n", e.what());
-    return kBadInputStatus;
-  }
-}
-
 }  // namespace
 
 void addCompareCommand(CLI::App& app, const ProcessGroup& group) {
@@ -171,7 +163,7 @@ void addCompareCommand(CLI::App& app, const ProcessGroup& group) {
                   "colour bar (blue: B below A, red: B above; outlined: rejected; missing "
                   "folders are created)")
       ->type_name("FILE.png");
-  cmd->callback([args] { throw CLI::RuntimeError(runReportingErrors(*args)); });
+  cmd->callback([args] { throw CLI::RuntimeError(runVerdictCommand([&] { return run(*args); })); });
 }
 
 }  // namespace verity

@@ -14,6 +14,7 @@
 #include "cli/output_paths.h"
 #include "cli/seed_option.h"
 #include "cli/subcommand.h"
+#include "cli/verdict_command.h"
 #include "core/error.h"
 #include "validation/compare/z_score_image.h"
 #include "validation/referee/baseline.h"
@@ -315,15 +316,6 @@ int run(const RefereeArgs& args) {
   return status;
 }
 
-int runReportingErrors(const RefereeArgs& args) {
-  try {
-    return run(args);
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "verity: error: {}\n", e.what());
-    return kBadInputStatus;
-  }
-}
-
 }  // namespace
 
 void addRefereeCommand(CLI::App& app, const ProcessGroup& group) {
@@ -390,7 +382,7 @@ void addRefereeCommand(CLI::App& app, const ProcessGroup& group) {
   cmd->add_option("--work-dir", args->workDir,
                   "Render here (default: a fresh temporary folder, removed at the end)")
       ->type_name("DIR");
-  cmd->callback([args] { throw CLI::RuntimeError(runReportingErrors(*args)); });
+  cmd->callback([args] { throw CLI::RuntimeError(runVerdictCommand([&] { return run(*args); })); });
 }
 
 }  // namespace verity
