@@ -16,6 +16,7 @@
 #include "cli/subcommand.h"
 #include "cli/verdict_command.h"
 #include "core/error.h"
+#include "render/interrupt.h"
 #include "validation/compare/z_score_image.h"
 #include "validation/referee/baseline.h"
 #include "validation/referee/command_template.h"
@@ -186,6 +187,8 @@ RefereeOutcome runEntry(const RefereeEntry& e, const RefereeArgs& args,
       }
       if (!e.given.saveBaseline.empty()) saveSide(e, r.a, args);
     }
+  } catch (const RendersInterrupted&) {
+    throw;  // ends the whole run (run()'s work folder is removed on the way out)
   } catch (const std::exception& error) {
     out.status = kBadInputStatus;
     out.summary = fmt::format("verity: error: {}\n", error.what());
@@ -382,7 +385,17 @@ void addRefereeCommand(CLI::App& app, const ProcessGroup& group) {
   cmd->add_option("--work-dir", args->workDir,
                   "Render here (default: a fresh temporary folder, removed at the end)")
       ->type_name("DIR");
-  cmd->callback([args] { throw CLI::RuntimeError(runVerdictCommand([&] { return run(*args); })); });
+  cmd->callback([args] {
+    throw CLI::RuntimeError(runVerdictCommand([&] {
+      const InterruptGuard guard(/*alsoTerminate=*/true);
+      try {
+        return run(*args);
+      } catch (const RendersInterrupted& e) {
+        fmt::print(stderr, "verity: {}: no decision\n", e.what());
+        return kInterruptedStatus;
+      }
+    }));
+  });
 }
 
 }  // namespace verity

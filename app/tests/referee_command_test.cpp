@@ -3,12 +3,15 @@
 // statuses, reports (JSON, JUnit, z-images), baselines and manifests, and every refusal
 // (exit status 2, naming what it is about, before any render).
 #include <gtest/gtest.h>
+#include <signal.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <thread>
 
 #include "test_directory.h"
 #include "testing/child_process.h"
@@ -61,6 +64,24 @@ TEST_F(RefereeCommand, ExitStatusIsTheDecision) {
   const testing::Outcome undecided =
       verity(referee({"--a", fake(" --noise 3"), "--b", fake(" --noise 3"), "--max-renders", "4"}));
   EXPECT_EQ(undecided.status, 3) << undecided.stderrText;
+}
+
+// Ctrl-C ends the rounds with no decision (exit status 130, as an interrupted render) once
+// the renders in flight are done, and the referee's own folder of renders goes with it.
+TEST_F(RefereeCommand, CtrlCEndsWithoutADecisionAndLeavesNoRenders) {
+  const std::filesystem::path tmp = dir_ / "tmp";  // the referee's temp folder (TMPDIR)
+  std::filesystem::create_directories(tmp);
+  const std::string slow = "sleep 1; " + fake();
+  const std::string stderrFile = path("stderr.txt");
+  const pid_t pid = testing::spawn({"/usr/bin/env", "TMPDIR=" + tmp.string(), VERITY_BINARY,
+                                    "referee", "--a", slow, "--b", slow, "--tile", "4"},
+                                   stderrFile);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // in the first round
+  kill(pid, SIGINT);
+  const testing::Outcome o = testing::finish(pid, stderrFile);
+  EXPECT_EQ(o.status, 130) << o.stderrText;
+  EXPECT_NE(o.stderrText.find("interrupted"), std::string::npos) << o.stderrText;
+  EXPECT_TRUE(std::filesystem::is_empty(tmp)) << "the renders' folder was left behind";
 }
 
 TEST_F(RefereeCommand, JsonCarriesTheRoundsAndTiles) {

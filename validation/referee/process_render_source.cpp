@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "core/error.h"
+#include "render/interrupt.h"
 #include "validation/referee/command_template.h"
 
 extern char** environ;
@@ -92,9 +93,10 @@ std::vector<Rendered> ProcessRenderSource::render(const std::vector<RenderReques
   std::atomic<size_t> next{0};
   std::exception_ptr firstError;
   std::mutex errorMutex;
-  // Each worker takes the next request until none is left or one has failed.
+  // Each worker takes the next request until none is left, one has failed, or the user
+  // interrupted (InterruptGuard: the renders in flight get the terminal's Ctrl-C themselves).
   auto worker = [&] {
-    for (size_t i = next++; i < requests.size(); i = next++) {
+    for (size_t i = next++; i < requests.size() && !InterruptGuard::flag(); i = next++) {
       {
         std::lock_guard lock(errorMutex);
         if (firstError) return;
@@ -110,6 +112,9 @@ std::vector<Rendered> ProcessRenderSource::render(const std::vector<RenderReques
   std::vector<std::thread> workers;
   for (int j = 0; j < std::min<int>(jobs_, int(requests.size())); ++j) workers.emplace_back(worker);
   for (std::thread& t : workers) t.join();
+  // Before a failure: a render ended by the same Ctrl-C fails too.
+  if (InterruptGuard::flag())
+    throw RendersInterrupted("interrupted before the round's renders were done");
   if (firstError) std::rethrow_exception(firstError);
   return out;
 }

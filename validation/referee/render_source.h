@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -23,10 +24,18 @@ struct Rendered {
   std::string label;  // names the render in errors (its file)
 };
 
+// Thrown by a source when the user interrupted the renders (Ctrl-C): not a verdict, not bad
+// input.
+class RendersInterrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 class RenderSource {
  public:
   virtual ~RenderSource() = default;
-  // One image per request, in the requests' order. Throws VerityError when a render fails.
+  // One image per request, in the requests' order. Throws VerityError when a render fails,
+  // RendersInterrupted when the user interrupted them.
   virtual std::vector<Rendered> render(const std::vector<RenderRequest>& requests) = 0;
 };
 
