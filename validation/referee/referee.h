@@ -28,7 +28,7 @@
 
 #include "validation/compare/image_comparison.h"
 #include "validation/referee/render_source.h"
-#include "validation/referee/round_decision.h"
+#include "validation/compare/round_decision.h"
 #include "validation/referee/tile_moments.h"
 
 namespace verity::validation {
