@@ -94,11 +94,12 @@ CompareDecision compare(const py::object& a, const py::object& b, int tile, doub
   if (!margin.is_none() && !(m > 0))
     throw py::value_error(
         fmt::format("verity.compare: margin must be above 0 (or None), not {}", m));
+  py::array firstA, firstB;
+  auto [labelsA, imagesA] = renders(a, "a", nullptr, &firstA);
+  auto [labelsB, imagesB] = renders(b, "b", &firstA, &firstB);
+  // The library's errors (VerityError: options, renders with the same pixels) are the caller's.
   try {
     validation::checkCompareOptions(options, m);
-    py::array firstA, firstB;
-    auto [labelsA, imagesA] = renders(a, "a", nullptr, &firstA);
-    auto [labelsB, imagesB] = renders(b, "b", &firstA, &firstB);
     // The sides keep only R, G and B and mark non-finite pixels, left out of both sides, as
     // `verity compare` does with EXR files.
     const validation::RenderSetSide sideA(std::move(labelsA), imagesA, "");

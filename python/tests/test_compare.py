@@ -102,8 +102,14 @@ def test_the_decision_is_the_commands_on_the_same_renders_as_exr(tmp_path, margi
 ])
 def test_bad_shapes_raise_value_error_with_the_shapes(a, b, message):
     good = renders("shapes")
-    with pytest.raises(ValueError, match=message):
+    with pytest.raises(ValueError, match=message) as e:
         verity.compare(good if a is None else a, good if b is None else b)
+    assert str(e.value).count("verity.compare") == 1, str(e.value)
+
+
+def test_a_side_that_is_not_a_sequence_is_a_type_error():
+    with pytest.raises(TypeError, match="b must be a sequence of"):
+        verity.compare(renders("type"), 3.0)
 
 
 def test_bad_options_raise_value_error_naming_them():
