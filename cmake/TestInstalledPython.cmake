@@ -22,6 +22,10 @@ endif()
 set(ENV{PYTHONPATH} ${prefix}/${INSTALL_DIR})
 set(ENV{PYTHONDONTWRITEBYTECODE} 1)
 set(ENV{VERITY_EXPECTED_PREFIX} ${prefix})
+# The command, for the tests that check the module against it (test_compare.py).
+if(VERITY_EXECUTABLE)
+  set(ENV{VERITY_EXECUTABLE} ${VERITY_EXECUTABLE})
+endif()
 # Run from the scratch folder: `python3 -m` puts the working directory first on the path,
 # and CTest's (the build's python/) holds the module as built.
 if(TESTS MATCHES "\\.py$")

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
-#include <optional>
 
 #include "cli/exit_status.h"
 #include "cli/number_options.h"
@@ -13,13 +12,11 @@
 #include "cli/subcommand.h"
 #include "cli/verdict_command.h"
 #include "core/error.h"
-#include "validation/compare/comparison_report.h"
+#include "validation/compare/compare_decision.h"
 #include "validation/compare/distinct_files.h"
 #include "validation/compare/image_comparison.h"
 #include "validation/compare/side_loading.h"
 #include "validation/compare/z_score_image.h"
-#include "validation/referee/referee_report.h"
-#include "validation/referee/round_decision.h"
 
 namespace verity {
 
@@ -68,12 +65,7 @@ int run(const CompareArgs& args) {
   validation::ComparisonOptions options;
   options.tileSize = args.tile;
   options.alpha = args.alpha;
-  validation::checkComparisonOptions(options);
-  if (args.margin > 0 && args.alpha >= 0.5)
-    throw VerityError("", "--alpha",
-                      fmt::format("with --margin, two one-sided tests need a level below 0.5, "
-                                  "not {}",
-                                  args.alpha));
+  validation::checkCompareOptions(options, args.margin);
   // Outputs are checked before any work, so that a verdict is never followed by an error.
   if (!args.zImage.empty()) {
     std::string extension = std::filesystem::path(args.zImage).extension().string();
@@ -91,19 +83,13 @@ int run(const CompareArgs& args) {
   validation::requireDistinctFiles(all);
   const auto a = validation::loadSide(filesA, "A", args.layer);
   const auto b = validation::loadSide(filesB, "B", args.layer);
-  const validation::ComparisonResult result = validation::compareSides(*a, *b, options);
-  fmt::print("{}", validation::comparisonSummary(result));
-  nlohmann::json json = validation::comparisonJson(result);
-  // With --margin, the referee's equivalence test at the same level (one look: no spending).
-  std::optional<validation::RoundDecision> equivalence;
-  if (args.margin > 0) {
-    equivalence = validation::decideRound(result, args.margin, args.alpha);
-    fmt::print("{}", validation::equivalenceSummary(result, *equivalence, args.margin));
-    json["equivalence"] = validation::equivalenceJson(result, *equivalence, args.margin);
-  }
+  const validation::CompareDecision decision =
+      validation::decideComparison(*a, *b, options, args.margin);
+  const validation::ComparisonResult& result = decision.comparison;
+  fmt::print("{}", decision.summary);
   if (!args.json.empty()) {
     std::ofstream out(args.json);
-    out << json.dump(2) << "\n";
+    out << decision.json.dump(2) << "\n";
     if (!out) throw VerityError(args.json, "", "cannot write the JSON report");
     fmt::print("wrote {}\n", args.json);
   }
@@ -120,9 +106,8 @@ int run(const CompareArgs& args) {
         args.zImage, validation::zScoreSaturation(result));
   }
   if (result.differ) return kDiffer;
-  if (equivalence && equivalence->verdict != validation::Verdict::Equivalent)
-    return kNotShownEquivalent;
-  return kAgree;
+  return decision.equivalence && !decision.equivalence->allEquivalent() ? kNotShownEquivalent
+                                                                        : kAgree;
 }
 
 }  // namespace

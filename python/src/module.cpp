@@ -8,6 +8,7 @@
 
 #include "check_options.h"
 #include "check_result_binding.h"
+#include "compare_binding.h"
 #include "python_bsdf.h"
 #include "python_warp.h"
 
@@ -78,7 +79,7 @@ PYBIND11_MODULE(verity, m) {
   using namespace verity::python;
   m.doc() =
       "Verity's statistical checks of BSDFs and warps written in NumPy (docs/python.md): "
-      "check_bsdf, check_warp.";
+      "check_bsdf, check_warp; and compare, for two sets of renders as arrays.";
   // The library's argument errors are the caller's: ValueError.
   py::register_exception_translator([](std::exception_ptr p) {
     try {
@@ -88,6 +89,7 @@ PYBIND11_MODULE(verity, m) {
     }
   });
   bindCheckResult(m);
+  bindCompare(m);
   m.def("check_bsdf", &checkBsdf, py::arg("sample"), py::arg("eval"), py::arg("pdf"),
         R"(Checks a BSDF given as three batched callables, for one incident direction wi:
     sample(wi, u) -> (wo, weight, pdf[, delta])  wi (3,), u (N, 3) in [0, 1): u[:, 0] picks

@@ -19,10 +19,6 @@ BatchRegions::BatchRegions(std::vector<int> regionOf, int regions, std::string l
     if (r >= 0) ++pixels_.at(r);
 }
 
-void BatchRegions::addBatch(const Film& film) {
-  addBatch(film.width(), film.height(), [&](int x, int y) { return film.mean(x, y); });
-}
-
 void BatchRegions::addBatch(const ImageChannels& image) {
   const std::vector<float>* planes[kChannels];
   for (int c = 0; c < kChannels; ++c) {

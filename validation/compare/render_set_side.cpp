@@ -13,22 +13,6 @@
 
 namespace verity::validation {
 
-namespace {
-
-// The image with only its R, G and B, renamed so.
-ImageChannels rgbOnly(const ImageChannels& image, const std::string& file,
-                      const std::string& layer) {
-  const auto names = rgbChannelNames(image, file, layer);
-  ImageChannels rgb;
-  rgb.width = image.width;
-  rgb.height = image.height;
-  rgb.attributes = image.attributes;
-  for (int c = 0; c < kChannels; ++c) rgb.planes[kChannelNames[c]] = image.planes.at(names[c]);
-  return rgb;
-}
-
-}  // namespace
-
 RenderSetSide::RenderSetSide(std::vector<std::string> files,
                              const std::vector<ImageChannels>& images, const std::string& layer)
     : files_(std::move(files)) {
@@ -88,18 +72,6 @@ void RenderSetSide::requireDistinctPixels() const {
                           fmt::format("has the same R, G and B as \"{}\": one render written "
                                       "twice is not two independent renders",
                                       files_[i]));
-}
-
-RenderSetSide RenderSetSide::load(const std::vector<std::filesystem::path>& files,
-                                  const std::string& layer) {
-  std::vector<std::string> names;
-  std::vector<ImageChannels> images;
-  for (const std::filesystem::path& file : files) {
-    names.push_back(file.string());
-    // Keep only R, G and B of each render while reading the next.
-    images.push_back(rgbOnly(readExr(file), file.string(), layer));
-  }
-  return RenderSetSide(std::move(names), images, "");
 }
 
 std::vector<std::array<MeanEstimate, kChannels>> RenderSetSide::tileEstimates(

@@ -67,4 +67,15 @@ std::array<std::string, kChannels> rgbChannelNames(const ImageChannels& image,
                                 fmt::join(matches, ", ")));
 }
 
+ImageChannels rgbOnly(const ImageChannels& image, const std::string& file,
+                      const std::string& layer) {
+  const auto names = rgbChannelNames(image, file, layer);
+  ImageChannels rgb;
+  rgb.width = image.width;
+  rgb.height = image.height;
+  rgb.attributes = image.attributes;
+  for (int c = 0; c < kChannels; ++c) rgb.planes[kChannelNames[c]] = image.planes.at(names[c]);
+  return rgb;
+}
+
 }  // namespace verity::validation

@@ -22,5 +22,8 @@ namespace verity::validation {
 std::array<std::string, kChannels> rgbChannelNames(const ImageChannels& image,
                                                    const std::string& file,
                                                    const std::string& layer = "");
+// The image with only its R, G and B (found so), renamed R, G and B.
+ImageChannels rgbOnly(const ImageChannels& image, const std::string& file,
+                      const std::string& layer);
 
 }  // namespace verity::validation

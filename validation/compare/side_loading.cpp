@@ -6,6 +6,7 @@
 #include "film/image_io.h"
 #include "validation/compare/exr_statistics.h"
 #include "validation/compare/render_set_side.h"
+#include "validation/compare/rgb_channels.h"
 #include "validation/compare/variance_image_side.h"
 
 namespace verity::validation {
@@ -19,6 +20,20 @@ bool hasVarianceChannels(const ImageChannels& image) {
 }
 
 }  // namespace
+
+// RenderSetSide's reading, here with the other EXR reading so that render_set_side.cpp needs
+// no renderer (verity_compare_core).
+RenderSetSide RenderSetSide::load(const std::vector<std::filesystem::path>& files,
+                                  const std::string& layer) {
+  std::vector<std::string> names;
+  std::vector<ImageChannels> images;
+  for (const std::filesystem::path& file : files) {
+    names.push_back(file.string());
+    // Keep only R, G and B of each render while reading the next.
+    images.push_back(rgbOnly(readExr(file), file.string(), layer));
+  }
+  return RenderSetSide(std::move(names), images, "");
+}
 
 std::unique_ptr<ComparisonSide> loadSide(const std::vector<std::filesystem::path>& files,
                                          const std::string& name, const std::string& layer) {

@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "validation/compare/image_comparison.h"
+#include "validation/compare/round_decision.h"
 #include "validation/referee/render_source.h"
-#include "validation/referee/round_decision.h"
 #include "validation/referee/tile_moments.h"
 
 namespace verity::validation {

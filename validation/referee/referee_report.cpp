@@ -5,58 +5,17 @@
 #include <cmath>
 
 #include "validation/compare/comparison_report.h"
+#include "validation/compare/equivalence_report.h"
 
 namespace verity::validation {
 
 namespace {
 
-nlohmann::json number(double x) {
-  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(x > 0 ? "inf" : "-inf");
-}
-
 std::string testName(const TileTest& t) {
   return fmt::format("tile ({}, {}) {}", t.tileX, t.tileY, kChannelNames[t.channel]);
 }
 
-std::string marginText(double m) {
-  return std::isfinite(m) ? fmt::format("±{:.4g}", m) : std::string("none below 1");
-}
-
 }  // namespace
-
-nlohmann::json equivalenceJson(const ComparisonResult& comparison, const RoundDecision& decision,
-                               double margin) {
-  nlohmann::json tests = nlohmann::json::array();
-  for (size_t i = 0; i < comparison.tests.size(); ++i) {
-    const TileTest& t = comparison.tests[i];
-    const EquivalenceResult& e = decision.equivalence[i];
-    tests.push_back({{"tile", {t.tileX, t.tileY}},
-                     {"channel", kChannelNames[t.channel]},
-                     {"p_lower", e.pLower},
-                     {"p_upper", e.pUpper},
-                     {"p", e.p},
-                     {"equivalent", e.p <= decision.equivalenceLevel}});
-  }
-  const bool all = decision.allEquivalent();
-  return {{"margin", margin},
-          {"level", decision.equivalenceLevel},
-          {"verdict", all ? "EQUIVALENT" : "not shown"},
-          {"equivalent_tests", decision.equivalentTests},
-          {"claimable_margin", number(claimableImageMargin(comparison, decision))},
-          {"tests", tests}};
-}
-
-std::string equivalenceSummary(const ComparisonResult& comparison, const RoundDecision& decision,
-                               double margin) {
-  const bool all = decision.allEquivalent();
-  return fmt::format(
-      "equivalence within ±{} of A (two one-sided tests per tile and channel at level {}, "
-      "intersection-union): {} of {} tests pass; {}; the smallest margin every test passes: "
-      "{}\n",
-      margin, decision.equivalenceLevel, decision.equivalentTests, comparison.tests.size(),
-      all ? "EQUIVALENT" : "equivalence not shown",
-      marginText(claimableImageMargin(comparison, decision)));
-}
 
 nlohmann::json refereeJson(const RefereeResult& r, const RefereeOptions& o) {
   nlohmann::json rounds = nlohmann::json::array();
@@ -89,7 +48,7 @@ nlohmann::json refereeJson(const RefereeResult& r, const RefereeOptions& o) {
   j["equivalence"] = equivalenceJson(r.comparison, r.rounds.back().decision, o.margin);
   if (r.verdict == Verdict::Undecided) {
     j["stop_reason"] = r.stopReason;
-    j["claimable_margin"] = number(r.claimableMargin);
+    j["claimable_margin"] = marginJson(r.claimableMargin);
     nlohmann::json undecided = nlohmann::json::array();
     for (size_t i : r.undecided)
       undecided.push_back({{"tile", {r.comparison.tests[i].tileX, r.comparison.tests[i].tileY}},

@@ -1,5 +1,5 @@
 // The referee's results for people (a summary) and for programs (JSON, documented in
-// docs/referee.md), and the equivalence part that `verity compare --margin` adds to its report.
+// docs/referee.md); the equivalence part of a comparison's report is equivalence_report.h.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -8,13 +8,6 @@
 #include "validation/referee/referee.h"
 
 namespace verity::validation {
-
-// Margin, level, whether every test passed (EQUIVALENT, or "not shown"), the claimable margin,
-// and each test's one-sided p-values.
-nlohmann::json equivalenceJson(const ComparisonResult& comparison, const RoundDecision& decision,
-                               double margin);
-std::string equivalenceSummary(const ComparisonResult& comparison, const RoundDecision& decision,
-                               double margin);
 
 // The verdict, the options, each round (renders, seconds, levels, decision) and the last
 // round's comparison with every tile's Welch and TOST results.

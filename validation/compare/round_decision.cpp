@@ -1,4 +1,4 @@
-#include "validation/referee/round_decision.h"
+#include "validation/compare/round_decision.h"
 
 #include <algorithm>
 #include <stdexcept>

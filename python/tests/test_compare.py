@@ -1,0 +1,120 @@
+"""verity.compare: two sets of renders as arrays, decided as `verity compare -a ... -b ...`
+decides on the same renders written as EXR files. Each side is 8 renders of 32x32 pixels in
+16x16 tiles: 4 tiles x 3 channels = 12 Welch tests, Holm at family-wise level alpha = 1%, so
+a correct pair is called DIFFER with probability at most 1%. Pixels are 0.5 plus Gaussian
+noise of sd 0.1: a tile's mean per render has sd 0.1/16 = 1.25% of it, and a 5% bias in one
+tile is detected with power above 99.9% (t near 8 against a Bonferroni critical value near
+4.5 at df 14; each test asserts the tile's detectable bias at 90% power is below 5%). The
+equivalence test (two one-sided tests per tile at 1%) within 5% passes with probability
+above 99.9% for equal sides, and within 1% can never pass at this noise. Seeds are fixed,
+from each test's name."""
+import json
+import os
+import subprocess
+import zlib
+
+import numpy as np
+import pytest
+import verity
+
+from exr_writer import write_exr
+
+SIZE, RENDERS = 32, 8
+
+
+def renders(name, count=RENDERS, bias_tile=None, bias=0.0):
+    rng = np.random.default_rng(zlib.crc32(name.encode()))
+    sets = 0.5 + 0.1 * rng.standard_normal((count, SIZE, SIZE, 3))
+    if bias_tile is not None:
+        x, y = bias_tile
+        sets[:, 16 * y:16 * (y + 1), 16 * x:16 * (x + 1), :] *= 1 + bias
+    return sets
+
+
+def test_sets_of_the_same_image_agree():
+    r = verity.compare(list(renders("agree a")), tuple(renders("agree b")))
+    assert r.verdict == "AGREE" and not r.differ, str(r)
+    assert len(r.tests) == 12 and not r.rejected
+    assert r.equivalence is None and "verdict: AGREE" in str(r)
+
+
+def test_a_5_percent_bias_in_one_tile_differs_and_names_that_tile():
+    a = renders("bias a").astype(np.float32)  # one (N, H, W, 3) array
+    b = renders("bias b", bias_tile=(1, 0), bias=0.05).astype(np.float32)
+    r = verity.compare(a, b, tile=16, alpha=0.01)
+    assert r.verdict == "DIFFER", str(r)
+    assert {(t.tile_x, t.tile_y) for t in r.rejected} == {(1, 0)}
+    biased = [t for t in r.tests if (t.tile_x, t.tile_y) == (1, 0)]
+    assert all(t.detectable_bias < 0.05 and t.relative_difference > 0 for t in biased)
+    assert 0 < r.detectable_bias < 0.05 and r.power == 0.9
+    assert "rejected tiles (x,y channels): (1,0 RGB)" in str(r)
+
+
+def test_a_margin_says_equivalent_or_not_shown():
+    a, b = renders("margin a"), renders("margin b")
+    wide = verity.compare(a, b, margin=0.05)
+    assert wide.verdict == "EQUIVALENT", str(wide)
+    assert wide.equivalence["verdict"] == "EQUIVALENT" and wide.claimable_margin < 0.05
+    assert all(t["equivalent"] for t in wide.equivalence["tests"])
+    narrow = verity.compare(a, b, margin=0.01)
+    assert narrow.verdict == "EQUIVALENCE NOT SHOWN", str(narrow)
+    assert narrow.equivalence["verdict"] == "not shown"
+    assert "equivalence not shown" in str(narrow)
+
+
+@pytest.mark.parametrize("margin", [None, 0.05])
+def test_the_decision_is_the_commands_on_the_same_renders_as_exr(tmp_path, margin):
+    command = os.environ.get("VERITY_EXECUTABLE")
+    if not command:
+        pytest.skip("VERITY_EXECUTABLE (the verity command) is set only by CTest's python_tests")
+    a = renders("command a").astype(np.float32)
+    b = renders("command b", bias_tile=(0, 1), bias=0.03).astype(np.float32)
+    b[2, 5, 7, 1] = np.nan  # left out of both sides, as the command does
+    files = {}
+    for side, images in (("a", a), ("b", b)):
+        files[side] = [str(tmp_path / f"{side}{i}.exr") for i in range(len(images))]
+        for path, image in zip(files[side], images):
+            write_exr(path, image)
+    out = tmp_path / "compare.json"
+    args = [command, "compare", "-a", *files["a"], "-b", *files["b"], "-o", str(out)]
+    if margin:
+        args += ["--margin", str(margin)]
+    status = subprocess.run(args, capture_output=True, text=True).returncode
+    mine = verity.compare(a, b, margin=margin)
+    assert status == {"AGREE": 0, "EQUIVALENT": 0, "DIFFER": 1, "EQUIVALENCE NOT SHOWN": 3}[
+        mine.verdict]
+    theirs, ours = json.loads(out.read_text()), mine.to_dict()
+    for key in ("a", "b", "side_a", "side_b"):  # file names against a[0], ...
+        theirs.pop(key), ours.pop(key)
+    assert ours == theirs
+    assert mine.to_dict()["side_b"]["nonfinite_pixels"] == [0, 0, 1, 0, 0, 0, 0, 0]
+
+
+@pytest.mark.parametrize("a, b, message", [
+    ([np.zeros((32, 32))] * 2, None, r"a\[0\] has shape \(32, 32\); each render must be \(H, W, 3\)"),
+    (None, [np.zeros((16, 32, 3)), np.zeros((16, 32, 3))],
+     r"b\[0\] has shape \(16, 32, 3\), while a\[0\] has \(32, 32, 3\)"),
+    (None, [np.ones((32, 32, 3)), np.zeros((32, 16, 3))],
+     r"b\[1\] has shape \(32, 16, 3\), while b\[0\] has \(32, 32, 3\)"),
+    ([np.zeros((32, 32, 3))], None, r"a has 1 render\(s\); a set needs at least 2"),
+    (np.zeros((32, 32, 3)), None, r"a has shape \(32, 32, 3\); give a sequence"),
+    ([np.zeros((32, 32, 3), dtype=np.int32)] * 2, None, r"a\[0\] must be a float32 or float64"),
+])
+def test_bad_shapes_raise_value_error_with_the_shapes(a, b, message):
+    good = renders("shapes")
+    with pytest.raises(ValueError, match=message) as e:
+        verity.compare(good if a is None else a, good if b is None else b)
+    assert str(e.value).count("verity.compare") == 1, str(e.value)
+
+
+def test_a_side_that_is_not_a_sequence_is_a_type_error():
+    with pytest.raises(TypeError, match="b must be a sequence of"):
+        verity.compare(renders("type"), 3.0)
+
+
+def test_bad_options_raise_value_error_naming_them():
+    a, b = renders("options a"), renders("options b")
+    with pytest.raises(ValueError, match="--alpha"):
+        verity.compare(a, b, alpha=0.6, margin=0.05)
+    with pytest.raises(ValueError, match="--tile"):
+        verity.compare(a, b, tile=0)
