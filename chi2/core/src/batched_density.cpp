@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
-#include <map>
 #include <mutex>
 #include <unordered_map>
 #include <vector>
@@ -38,7 +37,11 @@ struct Values {
   }
   void merge(std::vector<Entry>& added) {
     const auto middle = known.insert(known.end(), added.begin(), added.end());
-    std::inplace_merge(known.begin(), middle, known.end());
+    // A sub-computation's few dozen points are sorted in place: inplace_merge would allocate.
+    if (known.size() < 256)
+      std::sort(known.begin(), known.end());
+    else
+      std::inplace_merge(known.begin(), middle, known.end());
   }
 };
 
@@ -76,8 +79,6 @@ struct BatchedDensity::Memory {
   std::unordered_map<Lookup::Key, Values, KeyHash> values;
   std::unordered_map<Lookup::Key, Lookup::Result, KeyHash> results;
   std::vector<Outcome> outcomes;
-  // The unknown points of each points key, once each, in the order they are evaluated.
-  std::map<Lookup::Key, std::vector<Entry>> asked;
   std::mutex mutex;  // a computation may call f from several threads
 
   double lookup(double x, double y) {
@@ -98,23 +99,29 @@ struct BatchedDensity::Memory {
       into.insert(into.end(), list.size(), &list);
     };
     add(missing);
-    for (Outcome& o : outcomes) {
-      if (o.finished) {
-        results.emplace(o.key, o.result);
-        continue;
-      }
-      std::vector<Entry>& list = asked[o.pointsKey];
-      list.insert(list.end(), o.missing.begin(), o.missing.end());
+    std::erase_if(outcomes, [&](const Outcome& o) {
+      if (o.finished) results.emplace(o.key, o.result);
+      return o.finished;
+    });
+    // Sub-computations sharing a points key asked for their points together.
+    std::sort(outcomes.begin(), outcomes.end(),
+              [](const Outcome& a, const Outcome& b) { return a.pointsKey < b.pointsKey; });
+    for (size_t k = 0, first = 0; k < outcomes.size(); ++k) {
+      if (outcomes[k].pointsKey != outcomes[first].pointsKey) first = k;
+      if (first == k) continue;
+      std::vector<Entry>& list = outcomes[first].missing;
+      list.insert(list.end(), outcomes[k].missing.begin(), outcomes[k].missing.end());
+      outcomes[k].missing.clear();
     }
-    outcomes.clear();
-    for (auto& [key, list] : asked) add(list);
+    for (Outcome& o : outcomes) add(o.missing);
   }
   // The values evaluated, from the lists they were asked in.
   void keep() {
     direct.merge(missing);
     missing.clear();
-    for (auto& [key, list] : asked) values[key].merge(list);
-    asked.clear();
+    for (Outcome& o : outcomes)
+      if (!o.missing.empty()) values[o.pointsKey].merge(o.missing);
+    outcomes.clear();
   }
   // This pass met no unknown point: the computation's result is final.
   bool complete() const {
@@ -146,6 +153,7 @@ BatchedDensity::Lookup::Result BatchedDensity::Lookup::remembered(
     if (record)
       if (const Entry* known = record->find(e)) return known->value;
     ++missesHere;
+    if (outcome.missing.empty()) outcome.missing.reserve(64);  // a level of rules at once
     outcome.missing.push_back(e);
     return 0.0;
   });
