@@ -1,9 +1,12 @@
 #include <tbb/parallel_for.h>
+#include <verity/chi2/batched_density.h>
 #include <verity/chi2/quadrature.h>
 
 #include <algorithm>
+#include <bit>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace verity::chi2 {
@@ -132,6 +135,48 @@ double integrate1D(const std::function<double(double)>& f, double a, double b,
 
 namespace {
 
+// The last words of subKey: the options.
+constexpr int kOptionWords = 8;
+
+// What a sub-computation of the nested integral depends on besides f: its kind, the domain
+// and features it was given (by address: fixed within a computation), its bounds and options.
+BatchedDensity::Lookup::Key subKey(int kind, const void* domain, const void* features, double x,
+                                   double x0, double x1, double y0, double y1,
+                                   const QuadratureOptions& o) {
+  auto bits = [](double v) { return std::bit_cast<uint64_t>(v); };
+  return {static_cast<uint64_t>(kind),
+          reinterpret_cast<uintptr_t>(domain),
+          reinterpret_cast<uintptr_t>(features),
+          bits(x),
+          bits(x0),
+          bits(x1),
+          bits(y0),
+          bits(y1),
+          bits(o.relTolerance),
+          bits(o.outerRelTolerance),
+          bits(o.cellAbsTolerance),
+          o.maxDepth};
+}
+
+// compute(g), a {value, error}, g being the density to call: f itself, or through a batched
+// density (batched_density.h) the sub-computation's own points, so that a pass searches
+// among those only and takes a sub-computation an earlier pass finished as it was.
+// The key is made only then: the point-by-point path pays one type test.
+template <class T, class Key, class Compute>
+T remembered(const DensityFn& f, const Key& key, const Compute& compute) {
+  const auto* lookup = f.target<BatchedDensity::Lookup>();
+  if (!lookup) return compute(f);
+  const BatchedDensity::Lookup::Key k = key();
+  // The same bounds at other tolerances integrate the same points.
+  BatchedDensity::Lookup::Key points = k;
+  std::fill(points.begin() + kOptionWords, points.end(), 0);
+  const auto r = lookup->remembered(k, points, [&](const DensityFn& g) {
+    const T t = compute(g);
+    return BatchedDensity::Lookup::Result{t.value, t.error};
+  });
+  return T{r.value, r.error};
+}
+
 // Cuts at centre ± width·10⁻ᵏ (k = 0 … 7) and at centre itself, those inside (lo, hi): a peak
 // at `centre` far narrower than any bisection of the interval is then resolved, each piece
 // holding a part of it of about its own size (geometric hp-refinement). The densities are
@@ -156,15 +201,16 @@ std::vector<double> pieces(double lo, double hi, std::vector<double> cuts) {
 // ∫∫ f over [x0,x1] × clipY(x, y0, y1): the inner limits follow the domain's support, so the
 // boundary of the disk or triangle is a limit of integration and not a discontinuity. The
 // outer and inner ranges are split at the peaks inside the cell, graded towards them.
+// `features` identifies breaks, xBreaks and the features that peaks were chosen from.
 CellIntegral nested(const DensityFn& f, const BreakpointFn& breaks,
                     const std::vector<double>& xBreaks, const std::vector<Point2d>& peaks,
-                    const Domain* domain, double x0, double x1, double y0, double y1,
-                    const QuadratureOptions& options) {
+                    const Domain* domain, const DensityFeatures* features, double x0, double x1,
+                    double y0, double y1, const QuadratureOptions& options) {
   // The inner integral at x with its error estimate, which the outer rule integrates over x
   // with its own weights (the nested rule's error is at most the outer rule's error plus
   // ∫ |inner error| dx). An unweighted mean over the calls would count a call on a piece
   // graded 10⁻⁷ of a cell wide, next to a peak or a jump, as much as one on a whole cell.
-  auto inner = [&](double x) {
+  auto integrateInner = [&](const DensityFn& g, double x) {
     double lo = y0, hi = y1;
     if (domain) std::tie(lo, hi) = domain->clipY(x, y0, y1);
     if (!(hi > lo)) return Sample{};
@@ -188,12 +234,17 @@ CellIntegral nested(const DensityFn& f, const BreakpointFn& breaks,
           options.cellAbsTolerance * (ys[k + 1] - ys[k]) / ((y1 - y0) * (x1 - x0));
       s.value += adaptive(
           [&](double y) {
-            return Sample{f(x, y), 0};
+            return Sample{g(x, y), 0};
           },
           ys[k], ys[k + 1], options, absTolerance, &err);
       s.error += err.rule;
     }
     return s;
+  };
+  auto inner = [&](double x) {
+    return remembered<Sample>(
+        f, [&] { return subKey(0, domain, features, x, x0, x1, y0, y1, options); },
+        [&](const DensityFn& g) { return integrateInner(g, x); });
   };
   std::vector<double> xCuts;
   for (double b : xBreaks)
@@ -216,7 +267,7 @@ CellIntegral nested(const DensityFn& f, const BreakpointFn& breaks,
 
 double integrate2D(const DensityFn& f, double x0, double x1, double y0, double y1,
                    const QuadratureOptions& options, double* error) {
-  const CellIntegral r = nested(f, {}, {}, {}, nullptr, x0, x1, y0, y1, options);
+  const CellIntegral r = nested(f, {}, {}, {}, nullptr, nullptr, x0, x1, y0, y1, options);
   if (error) *error = r.error;
   return r.value;
 }
@@ -240,7 +291,12 @@ CellIntegral integrateRectangle(const DensityFn& f, const DensityFeatures& featu
     if (!(sphere && std::fabs(p.y()) > 1 - std::min(h, d.cellHeight())) && p.x() > b.x0 - marginX &&
         p.x() < b.x1 + marginX && p.y() > b.y0 - marginY && p.y() < b.y1 + marginY)
       near.push_back(p);
-  return nested(f, features.breaksY, features.breaksX, near, &d, b.x0, b.x1, b.y0, b.y1, options);
+  return remembered<CellIntegral>(
+      f, [&] { return subKey(1, &d, &features, 0, b.x0, b.x1, b.y0, b.y1, options); },
+      [&](const DensityFn&) {
+        return nested(f, features.breaksY, features.breaksX, near, &d, &features, b.x0, b.x1, b.y0,
+                      b.y1, options);
+      });
 }
 
 CellIntegral integrateCell(const DensityFn& f, const DensityFeatures& features, const Domain& d,

@@ -108,6 +108,44 @@ TEST(BatchedDensity, GivesTheIntegralsOfThePointByPointDensityInFewBatches) {
   EXPECT_GT(batched.evaluations(), 2 * 15 * 15 * d.cells());
 }
 
+// A sub-computation that met no unknown point is final: a later pass takes its result without
+// computing it again, and one sharing its points key finds its points' values.
+TEST(BatchedDensity, RemembersFinishedSubComputationsAndSharedPoints) {
+  using Lookup = BatchedDensity::Lookup;
+  BatchedDensity batched([](const std::vector<Point2d>& p, std::vector<double>& v) {
+    for (size_t k = 0; k < p.size(); ++k) v[k] = p[k].x() + p[k].y();
+  });
+  const Lookup::Key a{1}, b{2}, c{3};
+  int computedA = 0;
+  double result = 0, shared = 0;
+  batched.run([&](const DensityFn& f) {
+    const Lookup& lookup = *f.target<Lookup>();
+    const Lookup::Result first = lookup.remembered(a, a, [&](const DensityFn& g) {
+      ++computedA;
+      return Lookup::Result{g(1, 2), 0};
+    });
+    // Asks for a point that depends on the first result: a pass more.
+    result = lookup
+                 .remembered(b, b,
+                             [&](const DensityFn& g) {
+                               return Lookup::Result{g(first.value, 0), 0};
+                             })
+                 .value;
+    if (first.value != 0)  // the first's points key: (1, 2) is known
+      shared =
+          lookup.remembered(c, a,
+                            [&](const DensityFn& g) {
+                              return Lookup::Result{g(1, 2), 0};
+                            })
+              .value;
+  });
+  EXPECT_EQ(result, 3);
+  EXPECT_EQ(shared, 3);
+  EXPECT_EQ(batched.batches(), 2);
+  EXPECT_EQ(computedA, 2);  // unknown point, then final; the third pass took it as it was
+  EXPECT_EQ(batched.evaluations(), 3);  // (1, 2), (0, 0), (3, 0)
+}
+
 TEST(BatchedBsdf, IsCheckedAsThePointByPointModelOnEitherLayout) {
   const Vec3 wi{0.5, 0, std::sqrt(0.75)};
   for (CellLayout cells : {CellLayout::Grid, CellLayout::EqualProbability}) {
