@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "validation/referee/json_file.h"
 
 namespace verity::validation {
 
@@ -46,15 +47,7 @@ void saveBaseline(const std::filesystem::path& file, const Baseline& b) {
 
 Baseline loadBaseline(const std::filesystem::path& file) {
   const std::string name = file.string();
-  std::ifstream in(file);
-  if (!std::filesystem::is_regular_file(file) || !in)
-    throw VerityError(name, "", "cannot read the baseline (not a readable file)");
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw VerityError(name, "", fmt::format("is not JSON: {}", e.what()));
-  }
+  const nlohmann::json j = readJsonFile(file, "baseline");
   const auto field = [&](const nlohmann::json& node, const std::string& key,
                          const std::string& path) -> const nlohmann::json& {
     if (!node.is_object() || !node.contains(key))

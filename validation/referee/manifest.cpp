@@ -7,6 +7,7 @@
 #include <set>
 
 #include "core/error.h"
+#include "validation/referee/json_file.h"
 
 namespace verity::validation {
 
@@ -26,15 +27,7 @@ void onlyKeys(const nlohmann::json& node, const std::set<std::string>& keys,
 
 std::vector<ManifestEntry> loadManifest(const std::filesystem::path& file) {
   const std::string name = file.string();
-  std::ifstream in(file);
-  if (!std::filesystem::is_regular_file(file) || !in)
-    throw VerityError(name, "", "cannot read the manifest (not a readable file)");
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw VerityError(name, "", fmt::format("is not JSON: {}", e.what()));
-  }
+  const nlohmann::json j = readJsonFile(file, "manifest");
   if (!j.is_object() || !j.contains("entries") || !j["entries"].is_array() || j["entries"].empty())
     throw VerityError(name, "/entries", "a manifest needs a non-empty array \"entries\"");
   const std::filesystem::path folder = file.parent_path();
