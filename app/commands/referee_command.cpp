@@ -179,10 +179,12 @@ RefereeOutcome runEntry(const RefereeEntry& e, const RefereeArgs& args,
       if (!e.zImage.empty()) {
         // A's mean image, the side "B above A" speaks of; a baseline keeps no pixels, so
         // then B's.
-        const bool fromA = !r.a.meanImage().planes.empty();
-        const TileMoments& shown = fromA ? r.a : r.b;
-        writeZScoreImage(e.zImage, r.comparison, shown.meanImage(),
-                         fmt::format("{}: mean of {} renders", fromA ? "A" : "B", shown.renders()));
+        ImageChannels image = r.a.meanImage();
+        const bool fromA = !image.planes.empty();
+        if (!fromA) image = r.b.meanImage();
+        writeZScoreImage(e.zImage, r.comparison, image,
+                         fmt::format("{}: mean of {} renders", fromA ? "A" : "B",
+                                     (fromA ? r.a : r.b).renders()));
         out.summary += fmt::format("wrote {}\n", e.zImage.string());
       }
       if (!e.given.saveBaseline.empty()) saveSide(e, r.a, args);
