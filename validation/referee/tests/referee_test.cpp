@@ -90,19 +90,27 @@ TEST(CommandTemplate, PlaceholdersAreCheckedAndFilledShellQuoted) {
             "r -s 12 -o '/tmp/it'\\''s.exr' -n 64");
 }
 
+// Renders of seeds 1, 2, ... of the fake scene, both as images and added to moments.
+struct FakeRenders {
+  FakeRenders(const testing::FakeScene& scene, int count) : moments(scene.tileSize) {
+    for (uint64_t seed = 1; seed <= uint64_t(count); ++seed) {
+      images.push_back(testing::fakeRender(scene, seed));
+      names.push_back("r" + std::to_string(seed));
+      moments.add(images.back(), names.back());
+    }
+  }
+  TileMoments moments;
+  std::vector<ImageChannels> images;
+  std::vector<std::string> names;
+};
+
 // The referee's moments give each tile the same estimate as `verity compare`'s set of renders
 // (render_set_side.h: the method of batch means over the same pixels).
 TEST(TileMoments, EstimatesEqualThoseOfASetOfRenders) {
-  testing::FakeScene scene;
-  TileMoments moments(scene.tileSize);
-  std::vector<ImageChannels> images;
-  std::vector<std::string> names;
-  for (uint64_t seed = 1; seed <= 5; ++seed) {
-    images.push_back(testing::fakeRender(scene, seed));
-    names.push_back("r" + std::to_string(seed));
-    moments.add(images.back(), names.back());
-  }
-  const RenderSetSide set(names, images, "");
+  const testing::FakeScene scene;
+  const FakeRenders renders(scene, 5);
+  const TileMoments& moments = renders.moments;
+  const RenderSetSide set(renders.names, renders.images, "");
   const TileGrid grid{scene.width, scene.height, scene.tileSize};
   const auto expected = set.tileEstimates(grid, set.usablePixels(2));
   const auto got = MomentsSide(moments, "A").tileEstimates(grid, {});
@@ -119,16 +127,10 @@ TEST(TileMoments, EstimatesEqualThoseOfASetOfRenders) {
 // The picture under the z-scores: each pixel's mean over the renders, as `verity compare`
 // shows for a set; moments kept elsewhere (a baseline) have no pixels to show.
 TEST(TileMoments, MeanImageIsThePixelMeanOfTheRenders) {
-  testing::FakeScene scene;
-  TileMoments moments(scene.tileSize);
-  std::vector<ImageChannels> images;
-  std::vector<std::string> names;
-  for (uint64_t seed = 1; seed <= 3; ++seed) {
-    images.push_back(testing::fakeRender(scene, seed));
-    names.push_back("r" + std::to_string(seed));
-    moments.add(images.back(), names.back());
-  }
-  const ImageChannels expected = RenderSetSide(names, images, "").meanImage();
+  const testing::FakeScene scene;
+  const FakeRenders renders(scene, 3);
+  const TileMoments& moments = renders.moments;
+  const ImageChannels expected = RenderSetSide(renders.names, renders.images, "").meanImage();
   const ImageChannels got = MomentsSide(moments, "A").meanImage();
   ASSERT_EQ(got.width, scene.width);
   ASSERT_EQ(got.height, scene.height);
