@@ -55,6 +55,9 @@ struct BsdfCase {
   // The sweep's grid, or cells of equal probability where a lobe is narrower than a grid
   // cell or ends on a grid edge (TestOptions::cells).
   CellLayout cells = CellLayout::Grid;
+  // The degrees of freedom the cells must keep (0: no such claim). A narrow lobe's equal
+  // cells are there to keep them, which the grid's few cells take away (docs/checks.md).
+  int minDof = 0;
 };
 
 // An area light sampled from a reference point (see light_subjects.h).

@@ -2,24 +2,25 @@
 // grid, Phong of exponent 10⁶ and GGX of α 10⁻⁴ at 45° fall into a few cells, and an error
 // inside the lobe that keeps those cells' mass is invisible at any sample count; cut by the
 // claimed pdf, the same 64 × 32 cells keep well over a thousand dof (of 2,047), and both
-// materials still pass.
+// materials still pass. The sweep's equalcells_ cases assert that half (BsdfCase::minDof,
+// checked by BsdfTest), so their equal-cells run happens once; here only the grid runs.
 #include <gtest/gtest.h>
 
 #include "chi2/suite/suite.h"
 
 namespace verity::chi2::suite {
 
-TEST(NarrowLobeCells, KeepTheirDegreesOfFreedom) {
+TEST(NarrowLobeCells, KeepTheirDegreesOfFreedomWhereTheGridTakesThem) {
   int tested = 0;
   for (const BsdfCase& c : bsdfCases()) {
     if (c.name.rfind("equalcells_", 0) != 0) continue;
     ++tested;
+    EXPECT_EQ(c.cells, CellLayout::EqualProbability) << c.name;
+    EXPECT_GT(c.minDof, 1000) << c.name;
     BsdfCase grid = c;
     grid.cells = CellLayout::Grid;
-    const TestResult onGrid = runBsdf(grid), onEqualCells = runBsdf(c);
+    const TestResult onGrid = runBsdf(grid);
     EXPECT_LT(onGrid.chiSquare.dof, 200) << onGrid.report();
-    EXPECT_GT(onEqualCells.chiSquare.dof, 1000) << onEqualCells.report();
-    EXPECT_EQ(onEqualCells.verdict(), Verdict::Passed) << onEqualCells.report();
   }
   EXPECT_EQ(tested, 2);
 }

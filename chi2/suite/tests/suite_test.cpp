@@ -106,7 +106,9 @@ INSTANTIATE_TEST_SUITE_P(Quick, LightTest, ::testing::ValuesIn(select(lightCases
 
 class BsdfTest : public ::testing::TestWithParam<BsdfCase> {};
 TEST_P(BsdfTest, SamplesMatchPdf) {
-  expectPassed(runBsdf(GetParam()));
+  const TestResult r = runBsdf(GetParam());
+  expectPassed(r);
+  EXPECT_GE(r.chiSquare.dof, GetParam().minDof) << r.report();
 }
 INSTANTIATE_TEST_SUITE_P(Quick, BsdfTest, ::testing::ValuesIn(select(bsdfCases(), true)),
                          caseName<BsdfCase>);
