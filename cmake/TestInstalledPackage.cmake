@@ -8,7 +8,9 @@
 #
 # With -DCHECKS_ONLY=ON, BUILD_DIR is not needed: the package is first configured and built
 # here from SOURCE_DIR with VERITY_CHECKS_ONLY (no renderer, Embree, OpenEXR or MPI), so that
-# the installed libraries are shown to build without the renderer.
+# the installed libraries are shown to build without the renderer. With -DPYTHON=<python3>
+# -DPYTHON_INSTALL_DIR=<relative> as well, its Python module is built for that python3 and
+# run from a fresh install (TestInstalledPython.cmake, python/tests/checks_only.py).
 set(required SOURCE_DIR WORK_DIR)
 if(NOT CHECKS_ONLY)
   list(APPEND required BUILD_DIR)
@@ -51,8 +53,13 @@ endif()
 
 if(CHECKS_ONLY)
   set(BUILD_DIR ${WORK_DIR}/verity-checks-only)
+  set(python_settings)
+  if(PYTHON)
+    set(python_settings -DPython3_EXECUTABLE=${PYTHON}
+                        -DVERITY_PYTHON_INSTALL_DIR=${PYTHON_INSTALL_DIR})
+  endif()
   run(configure-checks-only ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${BUILD_DIR}
-      -DVERITY_CHECKS_ONLY=ON ${settings})
+      -DVERITY_CHECKS_ONLY=ON ${settings} ${python_settings})
   run(build-checks-only ${CMAKE_COMMAND} --build ${BUILD_DIR})
 endif()
 run(install ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
@@ -61,3 +68,12 @@ run(configure ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/external-bsdf -B ${exam
 run(build ${CMAKE_COMMAND} --build ${example_build})
 run(test ${CMAKE_CTEST_COMMAND} --test-dir ${example_build} --output-on-failure)
 message(STATUS "TestInstalledPackage: examples/external-bsdf built and passed against ${prefix}")
+if(CHECKS_ONLY AND PYTHON)
+  run(python ${CMAKE_COMMAND} -DBUILD_DIR=${BUILD_DIR} -DWORK_DIR=${WORK_DIR}/python
+      -DPYTHON=${PYTHON} -DINSTALL_DIR=${PYTHON_INSTALL_DIR}
+      -DTESTS=${SOURCE_DIR}/python/tests/checks_only.py
+      -P ${CMAKE_CURRENT_LIST_DIR}/TestInstalledPython.cmake)
+elseif(CHECKS_ONLY)
+  message(STATUS "TestInstalledPackage: the Python module was built but not imported "
+                 "(no -DPYTHON: this build has no module, as a sanitizer build)")
+endif()
