@@ -89,6 +89,11 @@ TEST(BrokenSamplers, AFailureNamesItsFigure) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "verity-chi2-failure-figure";
   std::filesystem::remove_all(dir);
+  // Removed again however the test ends: nothing is left in the temporary folder.
+  struct RemoveAtEnd {
+    std::filesystem::path dir;
+    ~RemoveAtEnd() { std::filesystem::remove_all(dir); }
+  } removeAtEnd{dir};
   setenv("VERITY_CHI2_FIGURES", dir.c_str(), 1);
   const TestResult r = run(Flaw::MissingJacobian, 0, 30, false, "figure");
   ASSERT_FALSE(r.passed());
