@@ -1,0 +1,28 @@
+#include "density.h"
+
+#include <algorithm>
+
+namespace verity::chi2 {
+
+void Density::wait(const Request& r, std::coroutine_handle<> computation) {
+  points_.insert(points_.end(), r.points, r.points + r.n);
+  waiting_.push_back({r.values, r.n, computation});
+}
+
+void Density::evaluate() {
+  std::vector<double> values(points_.size());
+  (*batch_)(points_, values);
+  ++batches_;
+  evaluations_ += static_cast<long long>(points_.size());
+  // The computations take their values in the order they asked, and resume in that order.
+  size_t next = 0;
+  for (const Waiting& w : waiting_) {
+    std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(next), w.n, w.values);
+    next += w.n;
+  }
+  for (auto w = waiting_.rbegin(); w != waiting_.rend(); ++w) ready_.push_back(w->computation);
+  points_.clear();
+  waiting_.clear();
+}
+
+}  // namespace verity::chi2

@@ -1,0 +1,135 @@
+// Where a computation (task.h) gets its density values: point by point from a DensityFn, each
+// request answered at once, or from a DensityBatchFn, where every computation that asks waits
+// and the points that all of them asked for are evaluated in one call. The quadrature's
+// refinement then asks, in each batch, for every node of every cell at its next level: one
+// call per level, each point evaluated once, the same points and results as point by point.
+#pragma once
+
+#include <tbb/parallel_for.h>
+#include <verity/chi2/quadrature.h>
+
+#include <array>
+#include <coroutine>
+#include <type_traits>
+#include <vector>
+
+#include "task.h"
+
+// GCC 12 gives a coroutine's frame linkage even where the coroutine has none, then warns that
+// the frame holds a type of the anonymous namespace (as the quadrature's and the partition's
+// own records are): a false warning for every computation these files define.
+#pragma GCC diagnostic ignored "-Wsubobject-linkage"
+
+namespace verity::chi2 {
+
+class Density {
+ public:
+  explicit Density(const DensityFn& f) : point_(&f) {}
+  explicit Density(const DensityBatchFn& batch) : batch_(&batch) {}
+  Density(const Density&) = delete;
+  Density& operator=(const Density&) = delete;
+
+  // co_await at(points, values, n): values[k] = f(points[k]) for k < n.
+  struct Request {
+    Density& density;
+    const Point2d* points;
+    double* values;
+    size_t n;
+
+    bool await_ready() const {
+      if (!density.point_) return false;
+      for (size_t k = 0; k < n; ++k) values[k] = (*density.point_)(points[k].x(), points[k].y());
+      return true;
+    }
+    void await_suspend(std::coroutine_handle<> waiting) { density.wait(*this, waiting); }
+    void await_resume() const {}
+  };
+  Request at(const Point2d* points, double* values, size_t n) { return {*this, points, values, n}; }
+
+  // co_await all(children): the children's results in order. Point by point they run one
+  // after the other, or over threads where `parallel` (the cells, strips and first pieces);
+  // batched, they run together, so that their requests share batches. An awaiter, not a
+  // coroutine: awaiting it costs no frame.
+  template <class T>
+  auto all(std::vector<Task<T>> children, bool parallel = false) {
+    return Children<T, std::vector<Task<T>>>{*this, std::move(children), parallel};
+  }
+  // The same for two children (a piece's halves), without a vector: an array of two results.
+  template <class T>
+  auto both(Task<T> first, Task<T> second) {
+    return Children<T, std::array<Task<T>, 2>>{*this, {std::move(first), std::move(second)}, false};
+  }
+
+  // Runs a computation to its end: at once point by point, or batch by batch.
+  template <class T>
+  T run(Task<T> task) {
+    ready_.push_back(task.handle());
+    for (;;) {
+      while (!ready_.empty()) {
+        const std::coroutine_handle<> h = ready_.back();
+        ready_.pop_back();
+        h.resume();
+      }
+      if (waiting_.empty()) break;
+      evaluate();
+    }
+    return task.result();
+  }
+
+  long long batches() const { return batches_; }
+  long long evaluations() const { return evaluations_; }
+
+ private:
+  template <class T, class Tasks>
+  struct Children {
+    Density& density;
+    Tasks children;
+    bool parallel;
+    Join join;
+
+    bool await_ready() {
+      if (!density.point_) return children.empty();
+      auto runOne = [&](size_t k) { children[k].handle().resume(); };  // runs to its end
+      if (parallel)
+        tbb::parallel_for(size_t(0), children.size(), runOne);
+      else
+        for (size_t k = 0; k < children.size(); ++k) runOne(k);
+      return true;
+    }
+    void await_suspend(std::coroutine_handle<> parent) {
+      join = {children.size(), parent};
+      for (auto c = children.rbegin(); c != children.rend(); ++c) {
+        c->handle().promise().join = &join;
+        density.ready_.push_back(c->handle());
+      }
+    }
+    auto await_resume() {
+      if constexpr (std::is_same_v<Tasks, std::vector<Task<T>>>) {
+        std::vector<T> results;
+        results.reserve(children.size());
+        for (Task<T>& c : children) results.push_back(c.result());
+        return results;
+      } else {
+        return std::array<T, 2>{children[0].result(), children[1].result()};
+      }
+    }
+  };
+  struct Waiting {
+    double* values;
+    size_t n;
+    std::coroutine_handle<> computation;
+  };
+
+  void wait(const Request& r, std::coroutine_handle<> computation);
+  // One call for every point asked for; the computations that asked are ready again.
+  void evaluate();
+
+  const DensityFn* point_ = nullptr;
+  const DensityBatchFn* batch_ = nullptr;
+  std::vector<std::coroutine_handle<>> ready_;
+  std::vector<Point2d> points_;
+  std::vector<Waiting> waiting_;
+  long long batches_ = 0, evaluations_ = 0;
+};
+
+}  // namespace verity::chi2
