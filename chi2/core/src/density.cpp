@@ -4,9 +4,10 @@
 
 namespace verity::chi2 {
 
-void Density::wait(const Request& r, std::coroutine_handle<> computation) {
-  points_.insert(points_.end(), r.points, r.points + r.n);
-  waiting_.push_back({r.values, r.n, computation});
+void Density::wait(const Point2d* points, double* values, size_t n,
+                   std::coroutine_handle<> computation) {
+  points_.insert(points_.end(), points, points + n);
+  waiting_.push_back({values, n, computation});
 }
 
 void Density::evaluate() {

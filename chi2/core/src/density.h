@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 #include <verity/chi2/quadrature.h>
 
+#include <algorithm>
 #include <array>
 #include <coroutine>
 #include <type_traits>
@@ -41,10 +42,14 @@ class Density {
       for (size_t k = 0; k < n; ++k) values[k] = (*density.point_)(points[k].x(), points[k].y());
       return true;
     }
-    void await_suspend(std::coroutine_handle<> waiting) { density.wait(*this, waiting); }
+    void await_suspend(std::coroutine_handle<> waiting) {
+      density.wait(points, values, n, waiting);
+    }
     void await_resume() const {}
   };
   Request at(const Point2d* points, double* values, size_t n) { return {*this, points, values, n}; }
+  // Batched: `computation` resumes once values[k] = f(points[k]) for k < n.
+  void wait(const Point2d* points, double* values, size_t n, std::coroutine_handle<> computation);
 
   // co_await all(children): the children's results in order. Point by point they run one
   // after the other, or over threads where `parallel` (the cells, strips and first pieces);
@@ -80,12 +85,17 @@ class Density {
   long long evaluations() const { return evaluations_; }
 
  private:
+  // The children of a parallel all() started at once when batched; the others start as these
+  // finish.
+  static constexpr size_t kInFlight = 256;
+
   template <class T, class Tasks>
   struct Children {
     Density& density;
     Tasks children;
     bool parallel;
     Join join;
+    std::vector<std::coroutine_handle<>> handles;
 
     bool await_ready() {
       if (!density.point_) return children.empty();
@@ -97,11 +107,15 @@ class Density {
       return true;
     }
     void await_suspend(std::coroutine_handle<> parent) {
-      join = {children.size(), parent};
-      for (auto c = children.rbegin(); c != children.rend(); ++c) {
-        c->handle().promise().join = &join;
-        density.ready_.push_back(c->handle());
+      for (Task<T>& c : children) {
+        c.handle().promise().join = &join;
+        handles.push_back(c.handle());
       }
+      // A batch needs only enough computations in flight to be large; thousands of cells,
+      // each with its refinement's frames, would hold hundreds of megabytes at once.
+      const size_t started = parallel ? std::min(handles.size(), kInFlight) : handles.size();
+      join = {children.size(), parent, handles.data() + started, handles.data() + handles.size()};
+      for (size_t k = started; k-- > 0;) density.ready_.push_back(handles[k]);
     }
     auto await_resume() {
       if constexpr (std::is_same_v<Tasks, std::vector<Task<T>>>) {
@@ -120,7 +134,6 @@ class Density {
     std::coroutine_handle<> computation;
   };
 
-  void wait(const Request& r, std::coroutine_handle<> computation);
   // One call for every point asked for; the computations that asked are ready again.
   void evaluate();
 

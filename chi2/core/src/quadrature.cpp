@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
 #include <limits>
 #include <tuple>
+#include <unordered_map>
 
 #include "quadrature_tasks.h"
 
@@ -23,7 +25,6 @@ struct Sample {
   double value = 0, error = 0;
 };
 using Nodes = std::array<double, kNodes>;
-using Samples = std::array<Sample, kNodes>;
 
 // One 15-point Gauss–Kronrod rule on [a, b], from the integrand at kronrodNodes(a, b). `value` and
 // `error` are bit for bit Boost's gauss_kronrod<double, 15>::integrate(f, a, b, 0, 0, &error)
@@ -55,22 +56,24 @@ Nodes kronrodNodes(double a, double b) {
   return t;
 }
 
-Rule kronrodRule(const Samples& s, double a, double b) {
+// `at(i)` is the Sample at node i of kronrodNodes(a, b).
+template <class At>
+Rule kronrodRule(const At& at, double a, double b) {
   const double scale = (b - a) / 2;
   const auto& x = Kronrod::abscissa();
   const auto& wk = Kronrod::weights();
   const auto& wg = Gauss::weights();
   size_t n = 0;
-  double k = s[n].value * wk[0], g = s[n].value * wg[0], c = s[n].error * wk[0];
-  ++n;
+  const Sample centre = at(n++);
+  double k = centre.value * wk[0], g = centre.value * wg[0], c = centre.error * wk[0];
   for (unsigned i = 2; i < x.size(); i += 2, n += 2) {
-    const Sample &p = s[n], &m = s[n + 1];
+    const Sample p = at(n), m = at(n + 1);
     k += (p.value + m.value) * wk[i];
     g += (p.value + m.value) * wg[i / 2];
     c += (p.error + m.error) * wk[i];
   }
   for (unsigned i = 1; i < x.size(); i += 2, n += 2) {
-    const Sample &p = s[n], &m = s[n + 1];
+    const Sample p = at(n), m = at(n + 1);
     k += (p.value + m.value) * wk[i];
     c += (p.error + m.error) * wk[i];
   }
@@ -81,21 +84,93 @@ Rule kronrodRule(const Samples& s, double a, double b) {
   return r;
 }
 
-// The density along y at one x, the inner integrals' integrand: a rule's nodes in one request.
+// The rules on consecutive pieces [ends[k], ends[k + 1]], `at(i)` being the integrand at their
+// nodes in order.
+template <size_t Rules, class At>
+std::array<Rule, Rules> rulesFrom(const std::array<double, Rules + 1>& ends, const At& at) {
+  std::array<Rule, Rules> rules;
+  for (size_t k = 0; k < Rules; ++k)
+    rules[k] = kronrodRule([&](size_t i) { return at(k * kNodes + i); }, ends[k], ends[k + 1]);
+  return rules;
+}
+
+// The rules a cell's integrals computed along y, by their x and piece: its pilot estimate, its
+// coarse level and its verifying level start from the same pieces, whose densities are then
+// evaluated once (half the points of a smooth lobe's grid). Used by one computation at a time.
+class RuleMemo {
+ public:
+  const Rule* find(double x, double a, double b) const {
+    const auto it = rules_.find(key(x, a, b));
+    return it == rules_.end() ? nullptr : &it->second;
+  }
+  void keep(double x, double a, double b, const Rule& r) { rules_.emplace(key(x, a, b), r); }
+
+ private:
+  using Key = std::array<uint64_t, 3>;
+  struct Hash {
+    size_t operator()(const Key& k) const {
+      uint64_t h = 0xcbf29ce484222325;  // FNV-1a over the words
+      for (uint64_t w : k) h = (h ^ w) * 0x100000001b3;
+      return static_cast<size_t>(h ^ (h >> 29));
+    }
+  };
+  static Key key(double x, double a, double b) {
+    return {std::bit_cast<uint64_t>(x), std::bit_cast<uint64_t>(a), std::bit_cast<uint64_t>(b)};
+  }
+  std::unordered_map<Key, Rule, Hash> rules_;
+};
+
+// The density along y at one x, the inner integrals' integrand. Its rules are awaiters, not
+// computations: the nodes of a rule, or of a piece's two halves, in one request, unless the
+// memo has them all.
 struct AlongY {
   Density& density;
   double x;
+  RuleMemo* memo = nullptr;
 
-  Task<Rule> rule(double a, double b) const {
-    const Nodes ys = kronrodNodes(a, b);
-    std::array<Point2d, kNodes> points;
-    for (size_t k = 0; k < kNodes; ++k) points[k] = Point2d(x, ys[k]);
-    std::array<double, kNodes> values;
-    co_await density.at(points.data(), values.data(), kNodes);
-    Samples s;
-    for (size_t k = 0; k < kNodes; ++k) s[k] = {values[k], 0};
-    co_return kronrodRule(s, a, b);
-  }
+  template <size_t Rules>
+  struct NodeValues {
+    const AlongY& along;
+    std::array<double, Rules + 1> ends;
+    std::array<Rule, Rules> rules;
+    bool remembered = false;
+    std::array<Point2d, kNodes * Rules> points;
+    std::array<double, kNodes * Rules> values;
+
+    Density::Request request() {
+      for (size_t k = 0; k < Rules; ++k) {
+        const auto ys = kronrodNodes(ends[k], ends[k + 1]);
+        for (size_t i = 0; i < kNodes; ++i) points[k * kNodes + i] = Point2d(along.x, ys[i]);
+      }
+      return along.density.at(points.data(), values.data(), points.size());
+    }
+    bool await_ready() {
+      if (along.memo) {
+        remembered = true;
+        for (size_t k = 0; k < Rules && remembered; ++k)
+          if (const Rule* r = along.memo->find(along.x, ends[k], ends[k + 1]))
+            rules[k] = *r;
+          else
+            remembered = false;
+        if (remembered) return true;
+      }
+      return request().await_ready();
+    }
+    void await_suspend(std::coroutine_handle<> waiting) {
+      along.density.wait(points.data(), values.data(), points.size(), waiting);
+    }
+    std::array<Rule, Rules> await_resume() {
+      if (remembered) return rules;
+      rules = rulesFrom<Rules>(ends, [&](size_t i) { return Sample{values[i], 0}; });
+      if (along.memo)
+        for (size_t k = 0; k < Rules; ++k)
+          along.memo->keep(along.x, ends[k], ends[k + 1], rules[k]);
+      return rules;
+    }
+  };
+  // co_await rule(a, b): a Rule; co_await halves(a, m, b): both halves' rules.
+  NodeValues<1> rule(double a, double b) const { return {*this, {a, b}}; }
+  NodeValues<2> halves(double a, double m, double b) const { return {*this, {a, m, b}}; }
 };
 
 // Where a 1D integral's error lies: its own rule's estimates and the error its integrand
@@ -140,7 +215,7 @@ template <class Integrand>
 Task<Part> bisect(Density& d, const Integrand& f, double a, double b, Rule whole,
                   double tolerancePerWidth, unsigned depth) {
   const double m = 0.5 * (a + b);
-  const std::array<Rule, 2> halves = co_await d.both(f.rule(a, m), f.rule(m, b));
+  const std::array<Rule, 2> halves = co_await f.halves(a, m, b);
   const Rule &r0 = halves[0], &r1 = halves[1];
   const double e0 = r0.error, e1 = r1.error;
   // Round-off detection (as in QUADPACK's QAG, Piessens et al. 1983): bisection shrinks the
@@ -172,7 +247,7 @@ template <class Integrand>
 Task<Part> adaptive(Density& d, const Integrand& f, double a, double b, QuadratureOptions options,
                     double absTolerance) {
   if (!(b > a)) co_return Part{};
-  const Rule whole = co_await f.rule(a, b);
+  const Rule whole = (co_await f.rule(a, b))[0];
   const double tolerance = std::max(options.relTolerance * std::fabs(whole.value), absTolerance);
   const double perWidth = tolerance / (b - a);
   if (accepted(whole, a, b, perWidth, options.maxDepth)) co_return leaf(whole, a, b);
@@ -224,6 +299,7 @@ struct Nested {
   const Domain* domain;
   double x0, x1, y0, y1;
   QuadratureOptions options;
+  RuleMemo* memo;
 };
 
 // The inner integral at x with its error estimate, which the outer rule integrates over x
@@ -245,38 +321,49 @@ Task<Sample> innerIntegral(Density& d, const Nested& spec, double x) {
   if (spec.domain && spec.domain->kind == DomainKind::Sphere)
     for (double pole : {-1.0, 1.0}) addGradedCuts(pole, 1.0, lo, hi, cuts);
   const std::vector<double> ys = pieces(lo, hi, std::move(cuts));
-  const AlongY along{d, x};
-  std::vector<Task<Part>> parts;
-  for (size_t k = 0; k + 1 < ys.size(); ++k) {
+  const AlongY along{d, x, spec.memo};
+  auto piece = [&](size_t k) {
     // The cell's absolute budget, spread over y; an inner error enters the cell times its
     // width.
     const double absTolerance = spec.options.cellAbsTolerance * (ys[k + 1] - ys[k]) /
                                 ((spec.y1 - spec.y0) * (spec.x1 - spec.x0));
-    parts.push_back(adaptive(d, along, ys[k], ys[k + 1], spec.options, absTolerance));
-  }
-  const std::vector<Part> done = co_await d.all(std::move(parts));
+    return adaptive(d, along, ys[k], ys[k + 1], spec.options, absTolerance);
+  };
   Sample s;
-  for (const Part& p : done) {
+  auto add = [&](const Part& p) {
     s.value += p.value;
     s.error += p.errors.rule;
+  };
+  if (ys.size() == 2) {  // one piece, the common case: awaited without the vectors
+    add(co_await piece(0));
+  } else {
+    std::vector<Task<Part>> parts;
+    for (size_t k = 0; k + 1 < ys.size(); ++k) parts.push_back(piece(k));
+    const std::vector<Part> done = co_await d.all(std::move(parts));
+    for (const Part& p : done) add(p);
   }
   co_return s;
 }
 
-// The inner integrals at a rule's nodes in x, the outer integral's integrand: refined together.
+// The inner integrals at a rule's nodes in x, the outer integral's integrand: every node's
+// integral (of a rule, or of a piece's two halves) refined together.
 struct InnerIntegrals {
   Density& density;
   const Nested& spec;
 
-  Task<Rule> rule(double a, double b) const {
-    const Nodes xs = kronrodNodes(a, b);
+  template <size_t Rules>
+  Task<std::array<Rule, Rules>> rules(std::array<double, Rules + 1> ends) const {
     std::vector<Task<Sample>> inner;
-    inner.reserve(kNodes);
-    for (double x : xs) inner.push_back(innerIntegral(density, spec, x));
+    inner.reserve(kNodes * Rules);
+    for (size_t k = 0; k < Rules; ++k)
+      for (double x : kronrodNodes(ends[k], ends[k + 1]))
+        inner.push_back(innerIntegral(density, spec, x));
     const std::vector<Sample> s = co_await density.all(std::move(inner));
-    Samples samples;
-    std::copy(s.begin(), s.end(), samples.begin());
-    co_return kronrodRule(samples, a, b);
+    co_return rulesFrom<Rules>(ends, [&](size_t i) { return s[i]; });
+  }
+  Task<std::array<Rule, 1>> rule(double a, double b) const { return rules<1>({a, b}); }
+  Task<std::array<Rule, 2>> halves(double a, double m, double b) const {
+    return rules<2>({a, m, b});
   }
 };
 
@@ -319,13 +406,16 @@ Task<std::vector<CellIntegral>> gridIntegrals(Density& f, const Domain& domain,
 double integrate2D(const DensityFn& f, double x0, double x1, double y0, double y1,
                    const QuadratureOptions& options, double* error) {
   Density d(f);
-  const CellIntegral r = d.run(nested(d, {{}, {}, {}, nullptr, x0, x1, y0, y1, options}));
+  const CellIntegral r = d.run(nested(d, {{}, {}, {}, nullptr, x0, x1, y0, y1, options, nullptr}));
   if (error) *error = r.error;
   return r.value;
 }
 
-Task<CellIntegral> rectangleIntegral(Density& f, const DensityFeatures& features, const Domain& d,
-                                     CellBounds b, QuadratureOptions options) {
+namespace {
+
+// ∫∫ f over a rectangle, as integrateRectangle; its rules along y kept in `memo` where given.
+Task<CellIntegral> rectangle(Density& f, const DensityFeatures& features, const Domain& d,
+                             CellBounds b, QuadratureOptions options, RuleMemo* memo) {
   const double w = b.x1 - b.x0, h = b.y1 - b.y0;
   // The peaks that matter here: inside the rectangle or within half its size of it, whose
   // tail would otherwise sit at an end of an interval as a spike. A strip far longer than
@@ -343,21 +433,38 @@ Task<CellIntegral> rectangleIntegral(Density& f, const DensityFeatures& features
         p.x() < b.x1 + marginX && p.y() > b.y0 - marginY && p.y() < b.y1 + marginY)
       near.push_back(p);
   // Named, not a temporary of the co_await expression: GCC 12 destroys such a temporary twice.
-  Nested spec{features.breaksY, features.breaksX, std::move(near), &d, b.x0, b.x1, b.y0, b.y1,
-              options};
+  Nested spec{features.breaksY,
+              features.breaksX,
+              std::move(near),
+              &d,
+              b.x0,
+              b.x1,
+              b.y0,
+              b.y1,
+              options,
+              memo};
   const CellIntegral r = co_await nested(f, std::move(spec));
+  co_return r;
+}
+
+}  // namespace
+
+Task<CellIntegral> rectangleIntegral(Density& f, const DensityFeatures& features, const Domain& d,
+                                     CellBounds b, QuadratureOptions options) {
+  const CellIntegral r = co_await rectangle(f, features, d, b, options, nullptr);
   co_return r;
 }
 
 Task<CellIntegral> cellIntegral(Density& f, const DensityFeatures& features, const Domain& d,
                                 int cell, QuadratureOptions options) {
   const CellBounds bounds = d.cell(cell);
+  RuleMemo memo;
   // A pilot estimate (one Kronrod rule per piece) sets the cell's share of the grid's
   // absolute error budget as a relative tolerance.
   QuadratureOptions pilot = options;
   pilot.maxDepth = 0;
   const double estimate =
-      std::fabs((co_await rectangleIntegral(f, features, d, bounds, pilot)).value);
+      std::fabs((co_await rectangle(f, features, d, bounds, pilot, &memo)).value);
   const double share = options.gridAbsTolerance / d.cells();
   QuadratureOptions o = options;
   o.cellAbsTolerance = share;
@@ -368,7 +475,7 @@ Task<CellIntegral> cellIntegral(Density& f, const DensityFeatures& features, con
     // What the cell may be off by, in absolute terms, whatever its pieces' sizes.
     o.cellAbsTolerance = o.relTolerance * estimate;
   }
-  const CellIntegral coarse = co_await rectangleIntegral(f, features, d, bounds, o);
+  const CellIntegral coarse = co_await rectangle(f, features, d, bounds, o, &memo);
   // A large cell (relTolerance of its value above its share) that met relTolerance is as
   // accurate as a density evaluated in single precision allows: a second level would only
   // refine rounding steps (it took over half the rules of a rough dielectric's grid).
@@ -393,7 +500,7 @@ Task<CellIntegral> cellIntegral(Density& f, const DensityFeatures& features, con
   fine.relTolerance /= 10;
   fine.outerRelTolerance /= 10;
   fine.cellAbsTolerance /= 10;
-  const CellIntegral r = co_await rectangleIntegral(f, features, d, bounds, fine);
+  const CellIntegral r = co_await rectangle(f, features, d, bounds, fine, &memo);
   co_return CellIntegral{r.value, std::min(r.error, std::fabs(r.value - coarse.value))};
 }
 
