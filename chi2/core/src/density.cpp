@@ -11,14 +11,14 @@ void Density::wait(const Point2d* points, double* values, size_t n,
 }
 
 void Density::evaluate() {
-  std::vector<double> values(points_.size());
-  (*batch_)(points_, values);
+  values_.resize(points_.size());
+  (*batch_)(points_, values_);
   ++batches_;
   evaluations_ += static_cast<long long>(points_.size());
   // The computations take their values in the order they asked, and resume in that order.
   size_t next = 0;
   for (const Waiting& w : waiting_) {
-    std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(next), w.n, w.values);
+    std::copy_n(values_.begin() + static_cast<std::ptrdiff_t>(next), w.n, w.values);
     next += w.n;
   }
   for (auto w = waiting_.rbegin(); w != waiting_.rend(); ++w) ready_.push_back(w->computation);

@@ -140,7 +140,8 @@ class Density {
   const DensityFn* point_ = nullptr;
   const DensityBatchFn* batch_ = nullptr;
   std::vector<std::coroutine_handle<>> ready_;
-  std::vector<Point2d> points_;
+  std::vector<Point2d> points_;  // the next batch, kept from batch to batch as values_ is
+  std::vector<double> values_;
   std::vector<Waiting> waiting_;
   long long batches_ = 0, evaluations_ = 0;
 };
