@@ -12,7 +12,21 @@ void Density::wait(const Point2d* points, double* values, size_t n,
 
 void Density::evaluate() {
   values_.resize(points_.size());
-  (*batch_)(points_, values_);
+  if (points_.size() <= kMostPerCall) {
+    (*batch_)(points_, values_);
+  } else {
+    std::vector<Point2d> part;
+    std::vector<double> partValues;
+    for (size_t from = 0; from < points_.size(); from += kMostPerCall) {
+      const size_t to = std::min(points_.size(), from + kMostPerCall);
+      part.assign(points_.begin() + static_cast<std::ptrdiff_t>(from),
+                  points_.begin() + static_cast<std::ptrdiff_t>(to));
+      partValues.resize(part.size());
+      (*batch_)(part, partValues);
+      std::copy(partValues.begin(), partValues.end(),
+                values_.begin() + static_cast<std::ptrdiff_t>(from));
+    }
+  }
   ++batches_;
   evaluations_ += static_cast<long long>(points_.size());
   // The computations take their values in the order they asked, and resume in that order.

@@ -134,8 +134,14 @@ class Density {
     std::coroutine_handle<> computation;
   };
 
-  // One call for every point asked for; the computations that asked are ready again.
+  // One call for every point asked for, or one per kMostPerCall of them; the computations that
+  // asked are ready again.
   void evaluate();
+  // A level of a partition's refinement asks for a few million points. Calls of 2¹⁸ keep a
+  // NumPy callable's temporaries (2 MiB each) in cache and its arrays below the size that
+  // malloc maps afresh, and zeroes, for every call (NumPy Lambertian on equal-probability
+  // cells: system time 0.37-0.42 s -> 0.24-0.29 s, peak memory 449 -> 336 MB).
+  static constexpr size_t kMostPerCall = size_t(1) << 18;
 
   const DensityFn* point_ = nullptr;
   const DensityBatchFn* batch_ = nullptr;
