@@ -75,6 +75,7 @@ class Density {
         ready_.pop_back();
         h.resume();
       }
+      if (points_.size() < kBatchSize && startAnother()) continue;
       if (waiting_.empty()) break;
       evaluate();
     }
@@ -85,9 +86,22 @@ class Density {
   long long evaluations() const { return evaluations_; }
 
  private:
-  // The children of a parallel all() started at once when batched; the others start as these
-  // finish.
-  static constexpr size_t kInFlight = 256;
+  // The points a batch gathers before it is evaluated, while computations are left to start:
+  // enough to make a NumPy call's own cost (tens of microseconds) small against its points'.
+  // Far larger batches cost more than they save: every computation in flight is resumed once
+  // per batch, and its frames leave the cache between batches. NumPy Lambertian on
+  // equal-probability cells, user seconds over two or three runs on a loaded machine: 2¹⁰
+  // 1.44-1.59, 2¹⁴ 1.13-1.43, 2¹⁶ 1.48-1.69, 2¹⁸ 1.67-2.32, every cell at once 1.6-1.7.
+  static constexpr size_t kBatchSize = kDensityBatchPoints;
+
+  // Starts the next child of the innermost parallel all() with children not yet started.
+  bool startAnother() {
+    if (unstarted_.empty()) return false;
+    Join& j = *unstarted_.back();
+    ready_.push_back(*j.next++);
+    if (j.next == j.end) unstarted_.pop_back();
+    return true;
+  }
 
   template <class T, class Tasks>
   struct Children {
@@ -111,11 +125,13 @@ class Density {
         c.handle().promise().join = &join;
         handles.push_back(c.handle());
       }
-      // A batch needs only enough computations in flight to be large; thousands of cells,
-      // each with its refinement's frames, would hold hundreds of megabytes at once.
-      const size_t started = parallel ? std::min(handles.size(), kInFlight) : handles.size();
+      // A parallel all's children start one at a time, as the batch needs more points
+      // (startAnother): thousands of cells in flight, each with its refinement's frames, would
+      // be touched once per batch far out of cache.
+      const size_t started = parallel ? 1 : handles.size();
       join = {children.size(), parent, handles.data() + started, handles.data() + handles.size()};
       for (size_t k = started; k-- > 0;) density.ready_.push_back(handles[k]);
+      if (started < handles.size()) density.unstarted_.push_back(&join);
     }
     auto await_resume() {
       if constexpr (std::is_same_v<Tasks, std::vector<Task<T>>>) {
@@ -146,6 +162,7 @@ class Density {
   const DensityFn* point_ = nullptr;
   const DensityBatchFn* batch_ = nullptr;
   std::vector<std::coroutine_handle<>> ready_;
+  std::vector<Join*> unstarted_;
   std::vector<Point2d> points_;  // the next batch, kept from batch to batch as values_ is
   std::vector<double> values_;
   std::vector<Waiting> waiting_;

@@ -18,8 +18,7 @@ namespace verity::chi2 {
 void* allocateFrame(std::size_t size);
 void freeFrame(void* frame, std::size_t size) noexcept;
 
-// Children awaited together (Density::all): each one that finishes starts the next of those
-// not yet started, and the last to finish resumes their parent.
+// Children awaited together (Density::all): the last to finish resumes their parent.
 struct Join {
   size_t remaining = 0;
   std::coroutine_handle<> parent;
@@ -43,10 +42,7 @@ class Task {
       // Symmetric transfer to whoever waits, so that a deep recursion does not grow the stack.
       std::coroutine_handle<> await_suspend(std::coroutine_handle<promise_type> h) noexcept {
         promise_type& p = h.promise();
-        if (Join* j = p.join) {
-          if (--j->remaining == 0) return j->parent;
-          return j->next != j->end ? *j->next++ : std::noop_coroutine();
-        }
+        if (Join* j = p.join) return --j->remaining == 0 ? j->parent : std::noop_coroutine();
         return p.continuation ? p.continuation : std::noop_coroutine();
       }
       void await_resume() noexcept {}

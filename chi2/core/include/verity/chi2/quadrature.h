@@ -19,6 +19,10 @@ using DensityFn = std::function<double(double x, double y)>;
 // in the point. Called from the thread that called the integral or partition given it.
 using DensityBatchFn =
     std::function<void(const std::vector<Point2d>& points, std::vector<double>& values)>;
+// The points a batch gathers, from every computation waiting for values, before it is
+// evaluated: a call holds at least this many but at the end of a computation, and at most
+// 2¹⁸ (larger batches are evaluated in calls of 2¹⁸).
+inline constexpr size_t kDensityBatchPoints = size_t(1) << 14;
 // Abscissae in y at which the density may jump, at a given x (may be empty).
 using BreakpointFn = std::function<std::vector<double>(double x)>;
 
