@@ -2,7 +2,8 @@
 Models for Refraction through Rough Surfaces", EGSR) with the height-correlated Smith masking
 term and Schlick's Fresnel, sampled by its distribution of visible normals (Heitz 2018,
 "Sampling the GGX Distribution of Visible Normals", JCGT 7(4)). Every function takes a batch:
-wi (3,) or (N, 3), wo and u (N, 3). Local frame: normal +z.
+wi (3,) or (N, 3), wo and u (N, 3). Local frame: normal +z. The arithmetic is on columns (x,
+y and z arrays of N values), which NumPy runs several times faster than on (N, 3) rows.
 
 `broken=True` plants a subtle pdf error: pdf() and sample() report the density of sampling
 all normals, D(h)·h.z/(4 wo·h), while sample() draws visible normals. The weight is still
@@ -15,12 +16,8 @@ import numpy as np
 F0 = np.array([0.95, 0.64, 0.54])  # gold, roughly
 
 
-def _z(w):
-    return w[..., 2]
-
-
-def _normalize(v):
-    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+def _columns(w):
+    return w[..., 0], w[..., 1], w[..., 2]
 
 
 class Ggx:
@@ -28,43 +25,51 @@ class Ggx:
         self.alpha = alpha
         self.broken = broken
 
-    def _d(self, h):
+    def _d(self, c2):
+        """D(h) from cos²θ of the (unit) half vector."""
         a2 = self.alpha * self.alpha
-        t = _z(h) ** 2 * (a2 - 1) + 1
+        t = c2 * (a2 - 1) + 1
         return a2 / (np.pi * t * t)
 
-    def _lambda(self, w):
-        c2 = np.clip(_z(w) ** 2, 1e-300, 1)
+    def _lambda(self, z):
+        c2 = np.clip(z * z, 1e-300, 1)
         return 0.5 * (np.sqrt(1 + self.alpha**2 * (1 - c2) / c2) - 1)
 
-    def _half(self, wi, wo):
-        h = _normalize(wi + wo)
-        return h * np.sign(_z(h))[..., None]
-
     def _fresnel(self, cos):
-        return F0 + (1 - F0) * (1 - np.clip(cos, 0, 1))[..., None] ** 5
+        m = 1 - np.clip(cos, 0, 1)
+        m2 = m * m
+        return F0 + (1 - F0) * (m2 * m2 * m)[:, None]
+
+    def _pdf(self, iz, hz2, length2, wo_dot_h):
+        # The unit half vector's cos² is hz²/|h|²; wo·h is given for the unit h.
+        if self.broken:
+            return self._d(hz2 / length2) * np.sqrt(hz2 / length2) / (4 * np.abs(wo_dot_h))
+        # Heitz 2018, eq. 17 and the Jacobian of reflection, 1/(4 wo·h).
+        return self._d(hz2 / length2) / ((1 + self._lambda(iz)) * 4 * np.abs(iz))
 
     def eval(self, wi, wo):
-        wi = np.broadcast_to(wi, wo.shape)
-        same_side = (_z(wi) > 0) & (_z(wo) > 0)
-        h = self._half(wi, wo)
-        g2 = 1 / (1 + self._lambda(wi) + self._lambda(wo))
-        f = (self._d(h) * g2 / (4 * np.abs(_z(wi) * _z(wo))))[..., None]
-        return np.where(same_side[..., None], f * self._fresnel(np.sum(wi * h, axis=-1)), 0.0)
-
-    def _pdf_of(self, wi, wo, h):
-        if self.broken:
-            return self._d(h) * _z(h) / (4 * np.abs(np.sum(wo * h, axis=-1)))
-        # Heitz 2018, eq. 17 and the Jacobian of reflection, 1/(4 wo·h).
-        return self._d(h) / ((1 + self._lambda(wi)) * 4 * np.abs(_z(wi)))
+        ix, iy, iz = _columns(wi)
+        ox, oy, oz = _columns(wo)
+        hx, hy, hz = ix + ox, iy + oy, iz + oz
+        length2 = hx * hx + hy * hy + hz * hz
+        g2 = 1 / (1 + self._lambda(iz) + self._lambda(oz))
+        f = self._d(hz * hz / length2) * g2 / (4 * np.abs(iz * oz))
+        f = np.where((iz > 0) & (oz > 0), f, 0.0)
+        return f[:, None] * self._fresnel((ix * hx + iy * hy + iz * hz) / np.sqrt(length2))
 
     def pdf(self, wi, wo):
-        same_side = (_z(wi) > 0) & (_z(wo) > 0)
-        return np.where(same_side, self._pdf_of(wi, wo, self._half(wi, wo)), 0.0)
+        ix, iy, iz = _columns(wi)
+        ox, oy, oz = _columns(wo)
+        hx, hy, hz = ix + ox, iy + oy, iz + oz
+        length2 = hx * hx + hy * hy + hz * hz
+        wo_dot_h = (ox * hx + oy * hy + oz * hz) / np.sqrt(length2)
+        return np.where((iz > 0) & (oz > 0), self._pdf(iz, hz * hz, length2, wo_dot_h), 0.0)
 
     def sample(self, wi, u):
+        a = self.alpha
         # Heitz 2018, listing 1: the visible normal in the hemisphere configuration.
-        v = _normalize(np.array([self.alpha * wi[0], self.alpha * wi[1], wi[2]]))
+        v = np.array([a * wi[0], a * wi[1], wi[2]])
+        v /= np.linalg.norm(v)
         lensq = v[0] ** 2 + v[1] ** 2
         t1 = np.array([-v[1], v[0], 0]) / np.sqrt(lensq) if lensq > 0 else np.array([1.0, 0, 0])
         t2 = np.cross(v, t1)
@@ -73,19 +78,21 @@ class Ggx:
         p1 = r * np.cos(phi)
         s = 0.5 * (1 + v[2])
         p2 = (1 - s) * np.sqrt(1 - p1 * p1) + s * r * np.sin(phi)
-        nh = (p1[:, None] * t1 + p2[:, None] * t2
-              + np.sqrt(np.maximum(0, 1 - p1 * p1 - p2 * p2))[:, None] * v)
-        h = _normalize(np.stack([self.alpha * nh[:, 0], self.alpha * nh[:, 1],
-                                 np.maximum(1e-7, nh[:, 2])], axis=-1))
-        cos = h @ wi
-        wo = 2 * cos[:, None] * h - wi
-        up = _z(wo) > 0
-        pdf = np.where(up, self._pdf_of(wi, wo, h), 0.0)
+        p3 = np.sqrt(np.maximum(0, 1 - p1 * p1 - p2 * p2))
+        hx = a * (p1 * t1[0] + p2 * t2[0] + p3 * v[0])
+        hy = a * (p1 * t1[1] + p2 * t2[1] + p3 * v[1])
+        hz = np.maximum(1e-7, p1 * t1[2] + p2 * t2[2] + p3 * v[2])
+        norm = np.sqrt(hx * hx + hy * hy + hz * hz)
+        hx, hy, hz = hx / norm, hy / norm, hz / norm
+        cos = hx * wi[0] + hy * wi[1] + hz * wi[2]
+        ox, oy, oz = 2 * cos * hx - wi[0], 2 * cos * hy - wi[1], 2 * cos * hz - wi[2]
+        wo = np.stack([ox, oy, oz], -1)
+        up = oz > 0
+        pdf = np.where(up, self._pdf(wi[2], hz * hz, 1.0, cos), 0.0)
         if self.broken:  # the weight of the density it claims
-            f = self.eval(wi, wo)
-            weight = f * (np.abs(_z(wo)) / np.where(up, pdf, 1))[:, None]
+            weight = self.eval(wi, wo) * (np.abs(oz) / np.where(up, pdf, 1))[:, None]
         else:
             # Heitz 2018, eq. 19: f·cos/pdf = F·G2/G1(wi).
-            g1 = 1 + self._lambda(wi)
-            weight = self._fresnel(cos) * (g1 / (g1 + self._lambda(wo)))[:, None]
+            g1 = 1 + self._lambda(wi[2])
+            weight = self._fresnel(cos) * (g1 / (g1 + self._lambda(oz)))[:, None]
         return wo, np.where(up[:, None], weight, 0.0), pdf

@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <tbb/parallel_for.h>
 #include <verity/chi2/bsdf_model_subject.h>
 
 #include <cmath>
@@ -115,9 +116,12 @@ void BsdfModelSubject::sampleBatch(pcg32& rng, std::vector<std::optional<Point2d
 
 void BsdfModelSubject::pdfBatch(const std::vector<Point2d>& points,
                                 std::vector<double>& values) const {
+  // The directions of a quadrature level's millions of nodes, over the threads while the
+  // batch's own callable (Python's, under its lock) runs on one.
   std::vector<Vector3d> wos(points.size());
-  for (size_t k = 0; k < points.size(); ++k)
+  tbb::parallel_for(size_t(0), points.size(), [&](size_t k) {
     wos[k] = setup_.frame.toLocal(sphereDirectionAtLastAzimuth(points[k].x(), points[k].y()));
+  });
   model_.pdfBatch(setup_.wi, wos, values);
 }
 

@@ -1,5 +1,4 @@
 #include <fmt/format.h>
-#include <tbb/parallel_for.h>
 #include <verity/chi2/partition.h>
 
 #include <algorithm>
@@ -8,6 +7,8 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+
+#include "quadrature_tasks.h"
 
 namespace verity::chi2 {
 
@@ -30,9 +31,6 @@ namespace {
 struct Piece {
   double a = 0, b = 0, mass = 0;
 };
-
-// The mass over [a, b]: by the inversion's rule, or `accurate`ly, to the test's own tolerances.
-using MassFn = std::function<double(double a, double b, bool accurate)>;
 
 // A piece holding more than 1/(kSplit·n) of the mass to be cut into n is bisected: an edge
 // placed by linear interpolation inside a piece then errs by at most that much, and by far
@@ -58,22 +56,54 @@ QuadratureOptions inversionOptions(QuadratureOptions o) {
   return o;
 }
 
+// What the inversion integrates: the loose rule, or the grid's accurate one (as integrateGrid
+// integrates a cell, to a grid cell's share of the budget).
+struct Integrals {
+  const Domain& grid;
+  const DensityFeatures& features;
+  QuadratureOptions loose, accurate;
+
+  Integrals(const Domain& g, const DensityFeatures& f, const QuadratureOptions& options)
+      : grid(g), features(f), loose(inversionOptions(options)), accurate(options) {
+    accurate.cellAbsTolerance = options.gridAbsTolerance / grid.cells();
+  }
+};
+
+// The mass over [a, b], by the inversion's rule or `accurate`ly (to the test's own
+// tolerances): of the marginal in x (over the grid's height), or of the strip [xa, xb]'s
+// conditional in y.
+struct MassOf {
+  Density& density;
+  const Integrals& integral;
+  bool inY = false;
+  double xa = 0, xb = 0;
+
+  Task<double> operator()(double a, double b, bool accurate) const {
+    const Domain& g = integral.grid;
+    const CellBounds r = inY ? CellBounds{xa, xb, a, b} : CellBounds{a, b, g.y0, g.y1};
+    const CellIntegral c = co_await rectangleIntegral(
+        density, integral.features, g, r, accurate ? integral.accurate : integral.loose);
+    co_return c.value;
+  }
+};
+
 // Halves whose rule-of-thumb masses lose half their parent's have missed a lobe between the
 // rule's nodes (Phong with exponent 10⁶: a lobe 10⁻³ wide): they are integrated accurately.
-void bisect(const MassFn& mass, const Piece& p, double most, double minWidth,
-            std::vector<Piece>& out) {
-  if (!(p.mass > most) || p.b - p.a <= minWidth) {
-    out.push_back(p);
-    return;
-  }
+Task<std::vector<Piece>> bisect(const MassOf& mass, Piece p, double most, double minWidth) {
+  if (!(p.mass > most) || p.b - p.a <= minWidth) co_return std::vector<Piece>{p};
+  Density& d = mass.density;
   const double m = 0.5 * (p.a + p.b);
-  Piece left{p.a, m, mass(p.a, m, false)}, right{m, p.b, mass(m, p.b, false)};
+  std::array<double, 2> halves = co_await d.both(mass(p.a, m, false), mass(m, p.b, false));
+  Piece left{p.a, m, halves[0]}, right{m, p.b, halves[1]};
   if (left.mass + right.mass < 0.5 * p.mass) {
-    left.mass = mass(p.a, m, true);
-    right.mass = mass(m, p.b, true);
+    halves = co_await d.both(mass(p.a, m, true), mass(m, p.b, true));
+    left.mass = halves[0];
+    right.mass = halves[1];
   }
-  bisect(mass, left, most, minWidth, out);
-  bisect(mass, right, most, minWidth, out);
+  std::array<std::vector<Piece>, 2> parts =
+      co_await d.both(bisect(mass, left, most, minWidth), bisect(mass, right, most, minWidth));
+  parts[0].insert(parts[0].end(), parts[1].begin(), parts[1].end());
+  co_return std::move(parts[0]);
 }
 
 // [lo, hi] cut at `cuts` and into n equal pieces, each bisected until it holds at most
@@ -82,8 +112,9 @@ void bisect(const MassFn& mass, const Piece& p, double most, double minWidth,
 // The first pieces are integrated accurately where their rule-of-thumb masses sum to less
 // than half of `expected` (or always, without an expectation: a lobe between the rule's
 // nodes would leave no mass to follow).
-std::vector<Piece> massPieces(const MassFn& mass, double lo, double hi, int n,
-                              std::vector<double> cuts, double expected) {
+Task<std::vector<Piece>> massPieces(const MassOf& mass, double lo, double hi, int n,
+                                    std::vector<double> cuts, double expected) {
+  Density& d = mass.density;
   for (int k = 1; k < n; ++k) cuts.push_back(lo + (hi - lo) * k / n);
   cuts.push_back(lo);
   cuts.push_back(hi);
@@ -93,21 +124,27 @@ std::vector<Piece> massPieces(const MassFn& mass, double lo, double hi, int n,
   const size_t count = cuts.size() - 1;
   std::vector<Piece> first(count);
   double total = 0;
-  for (bool accurate : {false, true}) {
+  for (int pass = 0; pass < 2; ++pass) {
+    const bool accurate = pass == 1;
     if (accurate && total >= 0.5 * expected) break;
-    tbb::parallel_for(size_t(0), count, [&](size_t k) {
-      first[k] = {cuts[k], cuts[k + 1], mass(cuts[k], cuts[k + 1], accurate)};
-    });
+    std::vector<Task<double>> masses;
+    masses.reserve(count);
+    for (size_t k = 0; k < count; ++k) masses.push_back(mass(cuts[k], cuts[k + 1], accurate));
+    const std::vector<double> m = co_await d.all(std::move(masses), true);
     total = 0;
-    for (const Piece& p : first) total += p.mass;
+    for (size_t k = 0; k < count; ++k) {
+      first[k] = {cuts[k], cuts[k + 1], m[k]};
+      total += m[k];
+    }
   }
-  std::vector<std::vector<Piece>> refined(count);
-  tbb::parallel_for(size_t(0), count, [&](size_t k) {
-    bisect(mass, first[k], total / (kSplit * n), kMinWidth * (hi - lo), refined[k]);
-  });
+  std::vector<Task<std::vector<Piece>>> refining;
+  refining.reserve(count);
+  for (size_t k = 0; k < count; ++k)
+    refining.push_back(bisect(mass, first[k], total / (kSplit * n), kMinWidth * (hi - lo)));
+  const std::vector<std::vector<Piece>> refined = co_await d.all(std::move(refining), true);
   std::vector<Piece> pieces;
   for (const auto& r : refined) pieces.insert(pieces.end(), r.begin(), r.end());
-  return pieces;
+  co_return pieces;
 }
 
 // The cumulative distribution over the pieces, linear inside each.
@@ -226,31 +263,14 @@ std::vector<double> equalMassEdges(const Cumulative& cdf, double lo, double hi, 
 
 namespace {
 
-// What the inversion integrates: the loose rule, or the grid's accurate one (as integrateGrid
-// integrates a cell, to a grid cell's share of the budget).
-struct Integrals {
-  const Domain& grid;
-  const DensityFeatures& features;
-  QuadratureOptions loose, accurate;
-
-  Integrals(const Domain& g, const DensityFeatures& f, const QuadratureOptions& options)
-      : grid(g), features(f), loose(inversionOptions(options)), accurate(options) {
-    accurate.cellAbsTolerance = options.gridAbsTolerance / grid.cells();
-  }
-  double operator()(const DensityFn& f, double xa, double xb, double ya, double yb,
-                    bool exact) const {
-    return integrateRectangle(f, features, grid, {xa, xb, ya, yb}, exact ? accurate : loose).value;
-  }
-};
-
 // The marginal distribution in x.
-Cumulative marginalOf(const Integrals& integral, const DensityFn& f) {
+Task<Cumulative> marginalOf(Density& f, const Integrals& integral) {
   const Domain& grid = integral.grid;
-  return Cumulative(
-      massPieces([&](double a, double b,
-                     bool accurate) { return integral(f, a, b, grid.y0, grid.y1, accurate); },
-                 grid.x0, grid.x1, grid.nx, integral.features.breaksX,
-                 std::numeric_limits<double>::infinity()));
+  const MassOf mass{f, integral};
+  std::vector<Piece> pieces =
+      co_await massPieces(mass, grid.x0, grid.x1, grid.nx, integral.features.breaksX,
+                          std::numeric_limits<double>::infinity());
+  co_return Cumulative(std::move(pieces));
 }
 
 // The grid where the marginal has no mass to follow, saying so.
@@ -273,21 +293,23 @@ Domain stripsOf(const Domain& grid, const Cumulative& marginal) {
   return d;
 }
 
-// Strip i's y edges in d.
-void cutStrip(const Integrals& integral, const DensityFn& f, const Cumulative& marginal, int i,
-              Domain& d) {
+// Strip i's y edges, the strip being [cells.xEdges[i], cells.xEdges[i + 1]].
+Task<std::vector<double>> stripEdges(Density& f, const Integrals& integral,
+                                     const Cumulative& marginal, const Domain& cells, int i) {
   const Domain& grid = integral.grid;
-  const double xa = d.xEdges[i], xb = d.xEdges[i + 1];
+  const double xa = cells.xEdges[i], xb = cells.xEdges[i + 1];
   // The strip's conditional distribution over the support's extent; its jumps taken at
   // the strip's middle (where they move with x, the cells follow them approximately).
-  const auto [lo, hi] = grid.supportY(xa, xb);
+  const std::pair<double, double> support = grid.supportY(xa, xb);
+  const double lo = support.first, hi = support.second;
   std::vector<double> cuts;
   if (integral.features.breaksY) cuts = integral.features.breaksY(0.5 * (xa + xb));
   std::vector<double> edges;
   if (xb > xa && hi > lo) {
-    const Cumulative conditional(massPieces(
-        [&](double a, double b, bool accurate) { return integral(f, xa, xb, a, b, accurate); }, lo,
-        hi, grid.ny, cuts, marginal.at(xb) - marginal.at(xa)));
+    const MassOf mass{f, integral, true, xa, xb};
+    std::vector<Piece> pieces = co_await massPieces(mass, lo, hi, grid.ny, std::move(cuts),
+                                                    marginal.at(xb) - marginal.at(xa));
+    const Cumulative conditional(std::move(pieces));
     if (conditional.total() > 0) edges = equalMassEdges(conditional, lo, hi, grid.ny);
   }
   if (edges.empty())  // a strip without mass: the grid's edges
@@ -295,30 +317,38 @@ void cutStrip(const Integrals& integral, const DensityFn& f, const Cumulative& m
   // The end cells reach the rectangle's edges, so that every point of it has a cell.
   edges.front() = grid.y0;
   edges.back() = grid.y1;
-  std::copy(edges.begin(), edges.end(), d.yEdges.begin() + static_cast<size_t>(i) * (grid.ny + 1));
+  co_return edges;
+}
+
+// The marginal in one computation, then every strip.
+Task<Domain> cellsOf(Density& f, const Domain& grid, const DensityFeatures& features,
+                     QuadratureOptions options) {
+  const Integrals integral(grid, features, options);
+  const Cumulative marginal = co_await marginalOf(f, integral);
+  if (auto d = withoutMass(grid, marginal)) co_return *d;
+  Domain d = stripsOf(grid, marginal);
+  std::vector<Task<std::vector<double>>> strips;
+  strips.reserve(grid.nx);
+  for (int i = 0; i < grid.nx; ++i) strips.push_back(stripEdges(f, integral, marginal, d, i));
+  const std::vector<std::vector<double>> edges = co_await f.all(std::move(strips), true);
+  for (int i = 0; i < grid.nx; ++i)
+    std::copy(edges[i].begin(), edges[i].end(),
+              d.yEdges.begin() + static_cast<size_t>(i) * (grid.ny + 1));
+  co_return d;
 }
 
 }  // namespace
 
 Domain equalProbabilityCells(const Domain& grid, const DensityFn& f,
                              const DensityFeatures& features, const QuadratureOptions& options) {
-  const Integrals integral(grid, features, options);
-  const Cumulative marginal = marginalOf(integral, f);
-  if (auto d = withoutMass(grid, marginal)) return *d;
-  Domain d = stripsOf(grid, marginal);
-  tbb::parallel_for(0, grid.nx, [&](int i) { cutStrip(integral, f, marginal, i, d); });
-  return d;
+  Density d(f);
+  return d.run(cellsOf(d, grid, features, options));
 }
 
-Domain equalProbabilityCells(const Domain& grid, BatchedDensity& f, const DensityFeatures& features,
-                             const QuadratureOptions& options) {
-  const Integrals integral(grid, features, options);
-  std::optional<Cumulative> marginal;
-  f.run([&](const DensityFn& pdf) { marginal = marginalOf(integral, pdf); });
-  if (auto d = withoutMass(grid, *marginal)) return *d;
-  Domain d = stripsOf(grid, *marginal);
-  f.run(grid.nx, [&](int i, const DensityFn& pdf) { cutStrip(integral, pdf, *marginal, i, d); });
-  return d;
+Domain equalProbabilityCells(const Domain& grid, const DensityBatchFn& f,
+                             const DensityFeatures& features, const QuadratureOptions& options) {
+  Density d(f);
+  return d.run(cellsOf(d, grid, features, options));
 }
 
 Domain cellsFor(const Domain& grid, CellLayout layout, const DensityFn& f,
@@ -326,7 +356,7 @@ Domain cellsFor(const Domain& grid, CellLayout layout, const DensityFn& f,
   return layout == CellLayout::Grid ? grid : equalProbabilityCells(grid, f, features, options);
 }
 
-Domain cellsFor(const Domain& grid, CellLayout layout, BatchedDensity& f,
+Domain cellsFor(const Domain& grid, CellLayout layout, const DensityBatchFn& f,
                 const DensityFeatures& features, const QuadratureOptions& options) {
   return layout == CellLayout::Grid ? grid : equalProbabilityCells(grid, f, features, options);
 }

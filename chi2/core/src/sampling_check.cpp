@@ -1,6 +1,6 @@
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
-#include <verity/chi2/batched_density.h>
+#include <verity/chi2/partition.h>
 #include <verity/chi2/sampling_check.h>
 
 #include <atomic>
@@ -90,19 +90,17 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
                                  subject.breakpointsX(), subject.peaks()};
   // The cells, cut from the subject's domain (equal-probability cells follow the claimed pdf:
   // partition.h), and the claimed density over each; through batches of points where the
-  // subject evaluates its density so, with the same figures (batched_density.h).
+  // subject evaluates its density so, with the same figures (DensityBatchFn).
   std::vector<CellIntegral> integrals;
   if (subject.batchedPdf()) {
-    BatchedDensity batched([&](const std::vector<Point2d>& points, std::vector<double>& values) {
+    const DensityBatchFn pdf = [&](const std::vector<Point2d>& points,
+                                   std::vector<double>& values) {
       subject.pdfBatch(points, values);
       for (size_t k = 0; k < points.size(); ++k)
         values[k] = checked(values[k], points[k].x(), points[k].y());
-    });
-    r.domain = cellsFor(subject.domain(), options.cells, batched, features, options.quadrature);
-    integrals.resize(r.domain.cells());
-    batched.run(r.domain.cells(), [&](int cell, const DensityFn& pdf) {
-      integrals[cell] = integrateCell(pdf, features, r.domain, cell, options.quadrature);
-    });
+    };
+    r.domain = cellsFor(subject.domain(), options.cells, pdf, features, options.quadrature);
+    integrals = integrateGrid(pdf, r.domain, options.quadrature, features);
   } else {
     const DensityFn pdf = [&](double x, double y) { return checked(subject.pdf(x, y), x, y); };
     r.domain = cellsFor(subject.domain(), options.cells, pdf, features, options.quadrature);

@@ -1,4 +1,5 @@
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 #include <verity/chi2/warp_subject.h>
 
 #include <cmath>
@@ -43,7 +44,8 @@ double WarpSubject::pdf(double x, double y) const {
 
 void WarpSubject::pdfBatch(const std::vector<Point2d>& points, std::vector<double>& values) const {
   std::vector<Vector3d> p(points.size());
-  for (size_t k = 0; k < points.size(); ++k) p[k] = point(points[k].x(), points[k].y());
+  tbb::parallel_for(size_t(0), points.size(),
+                    [&](size_t k) { p[k] = point(points[k].x(), points[k].y()); });
   model_.pdfBatch(p, values);
 }
 

@@ -1,4 +1,4 @@
-// The batched forms (batched_density.h, BsdfModel's and WarpModel's *Batch callables): a
+// The batched forms (DensityBatchFn, BsdfModel's and WarpModel's *Batch callables): a
 // model given them is checked exactly as it is point by point (the same cell probabilities
 // bit for bit, the same histogram, the same verdict and report), in few calls.
 //
@@ -6,13 +6,14 @@
 // here compare the two paths' figures, not the verdict's power, hence 2·10⁴ samples in few
 // cells.
 #include <gtest/gtest.h>
-#include <verity/chi2/batched_density.h>
 #include <verity/chi2/bsdf_adapter.h>
+#include <verity/chi2/partition.h>
 #include <verity/chi2/warp_adapter.h>
 
 #include <atomic>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "lambert_toy.h"
 #include "phong_toy.h"
@@ -34,6 +35,7 @@ BsdfModel phong(phong_toy::Flaw flaw) {
 // The model's own callables behind batched forms that count their calls.
 struct Calls {
   std::atomic<int> sample{0}, eval{0}, pdf{0};
+  std::atomic<long long> pdfPoints{0};
 };
 
 BsdfModel batched(BsdfModel m, Calls& calls) {
@@ -53,6 +55,7 @@ BsdfModel batched(BsdfModel m, Calls& calls) {
   m.pdfBatch = [point, &calls](const Eigen::Vector3d& wi, const std::vector<Eigen::Vector3d>& wo,
                                std::vector<double>& out) {
     ++calls.pdf;
+    calls.pdfPoints += static_cast<long long>(wo.size());
     for (size_t k = 0; k < wo.size(); ++k) out[k] = point.pdf(wi, wo[k]);
   };
   m.sample = nullptr;  // the check must not fall back on the point-by-point forms
@@ -80,70 +83,68 @@ void expectSame(const CheckResult& a, const CheckResult& b) {
 
 }  // namespace
 
-TEST(BatchedDensity, GivesTheIntegralsOfThePointByPointDensityInFewBatches) {
+// The grid's integrals and the equal-probability cells from batches are those of the density
+// point by point, bit for bit, from the same points: every point the point-by-point path
+// evaluates is evaluated once, in calls of kDensityBatchPoints but for a computation's last
+// levels.
+TEST(DensityBatches, GiveThePointByPointFiguresFromTheSamePointsInACallPerLevel) {
   const Domain d = sphereDomain(16);
-  auto f = [](double x, double y) { return std::exp(-40 * (y - 0.7) * (y - 0.7)) * (1 + x); };
-  const std::vector<CellIntegral> direct = integrateGrid(f, d, {});
-  BatchedDensity batched([&](const std::vector<Point2d>& p, std::vector<double>& v) {
+  std::atomic<long long> pointCalls{0};
+  const DensityFn f = [&](double x, double y) {
+    ++pointCalls;
+    return std::exp(-40 * (y - 0.7) * (y - 0.7)) * (1 + x);
+  };
+  long long batches = 0, batchPoints = 0;
+  const DensityBatchFn batch = [&](const std::vector<Point2d>& p, std::vector<double>& v) {
+    ++batches;
+    batchPoints += static_cast<long long>(p.size());
     for (size_t k = 0; k < p.size(); ++k) v[k] = f(p[k].x(), p[k].y());
-  });
-  // As one computation, and as one per cell.
-  std::vector<CellIntegral> whole, cells(d.cells());
-  batched.run([&](const DensityFn& g) { whole = integrateGrid(g, d, {}); });
-  EXPECT_LE(batched.batches(), 20);
-  batched.run(d.cells(),
-              [&](int c, const DensityFn& g) { cells[c] = integrateCell(g, {}, d, c, {}); });
-  ASSERT_EQ(whole.size(), direct.size());
-  for (size_t c = 0; c < whole.size(); ++c) {
-    EXPECT_EQ(whole[c].value, direct[c].value) << c;
-    EXPECT_EQ(whole[c].error, direct[c].error) << c;
+  };
+  const std::vector<CellIntegral> direct = integrateGrid(f, d, {});
+  const long long directCalls = pointCalls.exchange(0);
+  const std::vector<CellIntegral> batched = integrateGrid(batch, d, {});
+  ASSERT_EQ(batched.size(), direct.size());
+  for (size_t c = 0; c < batched.size(); ++c) {
+    EXPECT_EQ(batched[c].value, direct[c].value) << c;
+    EXPECT_EQ(batched[c].error, direct[c].error) << c;
   }
-  ASSERT_EQ(cells.size(), direct.size());
-  for (size_t c = 0; c < cells.size(); ++c) {
-    EXPECT_EQ(cells[c].value, direct[c].value) << c;
-    EXPECT_EQ(cells[c].error, direct[c].error) << c;
-  }
-  // A pass per refinement level, inner and outer, of the pilot, coarse and verifying rules.
-  EXPECT_LE(batched.batches(), 40);
-  EXPECT_GT(batched.evaluations(), 2 * 15 * 15 * d.cells());
+  EXPECT_EQ(batchPoints, directCalls);
+  // Full batches, then a call per refinement level, inner and outer, of the pilot, coarse and
+  // verifying rules of the last cells.
+  EXPECT_LE(batches, batchPoints / static_cast<long long>(kDensityBatchPoints) + 40);
+  EXPECT_GE(batchPoints, 15 * 15 * d.cells());  // each cell's first nested rule at least
+
+  const Domain pointCells = equalProbabilityCells(d, f);
+  batches = batchPoints = 0;
+  pointCalls = 0;
+  const Domain batchCells = equalProbabilityCells(d, batch, {}, {});
+  EXPECT_EQ(batchCells.xEdges, pointCells.xEdges);
+  EXPECT_EQ(batchCells.yEdges, pointCells.yEdges);
+  EXPECT_EQ(pointCalls, batchPoints);  // the batches' points only
+  EXPECT_LE(batches, batchPoints / static_cast<long long>(kDensityBatchPoints) + 40);
 }
 
-// A sub-computation that met no unknown point is final: a later pass takes its result without
-// computing it again, and one sharing its points key finds its points' values.
-TEST(BatchedDensity, RemembersFinishedSubComputationsAndSharedPoints) {
-  using Lookup = BatchedDensity::Lookup;
-  BatchedDensity batched([](const std::vector<Point2d>& p, std::vector<double>& v) {
-    for (size_t k = 0; k < p.size(); ++k) v[k] = p[k].x() + p[k].y();
-  });
-  const Lookup::Key a{1}, b{2}, c{3};
-  int computedA = 0;
-  double result = 0, shared = 0;
-  batched.run([&](const DensityFn& f) {
-    const Lookup& lookup = *f.target<Lookup>();
-    const Lookup::Result first = lookup.remembered(a, a, [&](const DensityFn& g) {
-      ++computedA;
-      return Lookup::Result{g(1, 2), 0};
-    });
-    // Asks for a point that depends on the first result: a pass more.
-    result = lookup
-                 .remembered(b, b,
-                             [&](const DensityFn& g) {
-                               return Lookup::Result{g(first.value, 0), 0};
-                             })
-                 .value;
-    if (first.value != 0)  // the first's points key: (1, 2) is known
-      shared =
-          lookup.remembered(c, a,
-                            [&](const DensityFn& g) {
-                              return Lookup::Result{g(1, 2), 0};
-                            })
-              .value;
-  });
-  EXPECT_EQ(result, 3);
-  EXPECT_EQ(shared, 3);
-  EXPECT_EQ(batched.batches(), 2);
-  EXPECT_EQ(computedA, 2);  // unknown point, then final; the third pass took it as it was
-  EXPECT_EQ(batched.evaluations(), 3);  // (1, 2), (0, 0), (3, 0)
+// What the batch function throws (a NumPy callable's exception) leaves the integral, and
+// the computations waiting for that batch, every cell's, are freed (the sanitizer build looks
+// for leaks).
+TEST(DensityBatches, AnExceptionFromTheBatchReachesTheCaller) {
+  const Domain d = squareDomain(4);
+  int calls = 0;
+  const DensityBatchFn failing = [&](const std::vector<Point2d>& p, std::vector<double>& v) {
+    if (++calls == 1) throw std::runtime_error("pdf raised");
+    std::fill(v.begin(), v.end(), p.empty() ? 0.0 : 1.0);
+  };
+  EXPECT_THROW(
+      {
+        try {
+          integrateGrid(failing, d, {});
+        } catch (const std::runtime_error& e) {
+          EXPECT_STREQ(e.what(), "pdf raised");
+          throw;
+        }
+      },
+      std::runtime_error);
+  EXPECT_EQ(calls, 1);
 }
 
 TEST(BatchedBsdf, IsCheckedAsThePointByPointModelOnEitherLayout) {
@@ -158,7 +159,9 @@ TEST(BatchedBsdf, IsCheckedAsThePointByPointModelOnEitherLayout) {
       expectSame(point, batch);
       EXPECT_EQ(calls.sample, 1);  // one chunk of 2·10⁴ samples
       EXPECT_EQ(calls.eval, 3);    // the samples both ways, and the cell centres
-      EXPECT_LE(calls.pdf, 80);
+      // Full batches, and a call per refinement level at the end of the partition and of the
+      // cells' integrals.
+      EXPECT_LE(calls.pdf, calls.pdfPoints / static_cast<long long>(kDensityBatchPoints) + 80);
     }
   }
 }
@@ -168,21 +171,23 @@ TEST(BatchedWarp, IsCheckedAsThePointByPointModel) {
       [](const Uniform2& u) { return lambert_toy::cosineHemisphere(u.x, u.y); },
       [](const Vec3& w) { return lambert_toy::cosinePdf(w); });
   std::atomic<int> calls{0};
+  std::atomic<long long> points{0};
   WarpModel b = m;
   b.sampleBatch = [m, &calls](const std::vector<Uniform2>& u,
                               std::vector<std::optional<Eigen::Vector3d>>& out) {
     ++calls;
     for (size_t k = 0; k < u.size(); ++k) out[k] = m.sample(u[k]);
   };
-  b.pdfBatch = [m, &calls](const std::vector<Eigen::Vector3d>& p, std::vector<double>& v) {
+  b.pdfBatch = [m, &calls, &points](const std::vector<Eigen::Vector3d>& p, std::vector<double>& v) {
     ++calls;
+    points += static_cast<long long>(p.size());
     for (size_t k = 0; k < p.size(); ++k) v[k] = m.pdf(p[k]);
   };
   b.sample = nullptr;
   b.pdf = nullptr;
   CheckOptions o = options("batched cosine hemisphere", CellLayout::EqualProbability);
   expectSame(checkWarp(m, o), checkWarp(b, o));
-  EXPECT_LE(calls, 81);
+  EXPECT_LE(calls, points / static_cast<long long>(kDensityBatchPoints) + 81);
 }
 
 }  // namespace verity::chi2

@@ -53,8 +53,8 @@ struct BsdfModel {
   // Optional batched forms, one call for many directions (SIMD or GPU code, NumPy): where
   // sampleBatch and evalBatch are set, the check draws its samples and evaluates them through
   // them; where pdfBatch is set, the quadrature calls it with every node of a refinement level
-  // at once (batched_density.h). sample, eval and pdf are still needed where these are not
-  // (the delta lobes' own checks, a sample's reversed evaluation through evalAdjoint).
+  // at once (DensityBatchFn, quadrature.h). sample, eval and pdf are still needed where these are
+  // not (the delta lobes' own checks, a sample's reversed evaluation through evalAdjoint).
   using SampleBatchFn =
       std::function<void(const Eigen::Vector3d& wi, const std::vector<BsdfUniforms>& u,
                          std::vector<std::optional<DirectionSample>>& out)>;

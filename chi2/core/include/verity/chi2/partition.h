@@ -9,7 +9,6 @@
 // Transformations", applied to cell edges rather than to samples).
 #pragma once
 
-#include <verity/chi2/batched_density.h>
 #include <verity/chi2/domain.h>
 #include <verity/chi2/quadrature.h>
 
@@ -49,15 +48,15 @@ Domain equalProbabilityCells(const Domain& grid, const DensityFn& f,
                              const DensityFeatures& features = {},
                              const QuadratureOptions& options = {});
 
-// The same cells from a density evaluated in batches (batched_density.h): the marginal in
-// one computation, then every strip in parallel.
-Domain equalProbabilityCells(const Domain& grid, BatchedDensity& f, const DensityFeatures& features,
-                             const QuadratureOptions& options);
+// The same cells from a density evaluated in batches (DensityBatchFn): the marginal's
+// refinement, then every strip's together, a call per level.
+Domain equalProbabilityCells(const Domain& grid, const DensityBatchFn& f,
+                             const DensityFeatures& features, const QuadratureOptions& options);
 
 // The cells a sampling test histograms in: `grid` itself, or equalProbabilityCells.
 Domain cellsFor(const Domain& grid, CellLayout layout, const DensityFn& f,
                 const DensityFeatures& features, const QuadratureOptions& options);
-Domain cellsFor(const Domain& grid, CellLayout layout, BatchedDensity& f,
+Domain cellsFor(const Domain& grid, CellLayout layout, const DensityBatchFn& f,
                 const DensityFeatures& features, const QuadratureOptions& options);
 
 }  // namespace verity::chi2

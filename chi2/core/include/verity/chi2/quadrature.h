@@ -14,6 +14,15 @@ namespace verity::chi2 {
 
 // A density with respect to dx dy on a domain; must be safe to call from several threads.
 using DensityFn = std::function<double(double x, double y)>;
+// The density at every point of a batch, values[k] = f(points[k]): one call for many points,
+// for SIMD or GPU code, or a density written in NumPy, whose cost is in the call rather than
+// in the point. Called from the thread that called the integral or partition given it.
+using DensityBatchFn =
+    std::function<void(const std::vector<Point2d>& points, std::vector<double>& values)>;
+// The points a batch gathers, from every computation waiting for values, before it is
+// evaluated: a call holds at least this many but at the end of a computation, and at most
+// 2¹⁸ (larger batches are evaluated in calls of 2¹⁸).
+inline constexpr size_t kDensityBatchPoints = size_t(1) << 14;
 // Abscissae in y at which the density may jump, at a given x (may be empty).
 using BreakpointFn = std::function<std::vector<double>(double x)>;
 
@@ -77,6 +86,12 @@ CellIntegral integrateCell(const DensityFn& f, const DensityFeatures& features,
                            const Domain& domain, int cell, const QuadratureOptions& options);
 // All cells, in parallel over cells.
 std::vector<CellIntegral> integrateGrid(const DensityFn& f, const Domain& domain,
+                                        const QuadratureOptions& options,
+                                        const DensityFeatures& features = {});
+// The same figures, bit for bit, from a density evaluated in batches: every cell's refinement
+// advances together, so each call holds every node that the next level of every cell needs
+// (one call per level of the nested rules, each point evaluated once).
+std::vector<CellIntegral> integrateGrid(const DensityBatchFn& f, const Domain& domain,
                                         const QuadratureOptions& options,
                                         const DensityFeatures& features = {});
 

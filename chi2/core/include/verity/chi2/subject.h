@@ -25,8 +25,8 @@ class Subject {
   // Batched forms, for a sampler or density whose cost is in the call (SIMD or GPU code, a
   // NumPy function): runSamplingTest draws each chunk of samples with one sampleBatch, which
   // must draw from rng as n calls of sample() would (the default is those calls), and, where
-  // batchedPdf(), integrates the density through pdfBatch (batched_density.h), with the same
-  // cell probabilities as pdf() point by point.
+  // batchedPdf(), integrates the density through pdfBatch (DensityBatchFn, quadrature.h), with the
+  // same cell probabilities as pdf() point by point.
   virtual void sampleBatch(pcg32& rng, std::vector<std::optional<Point2d>>& out,
                            Audit& audit) const;
   virtual bool batchedPdf() const { return false; }

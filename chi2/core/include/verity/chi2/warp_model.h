@@ -35,7 +35,7 @@ struct WarpModel {
   std::function<std::vector<double>(double x)> breakpointsY;
   // Optional batched forms, one call for many points (SIMD or GPU code, NumPy): out[k] =
   // sample(u[k]) and values[k] = pdf(points[k]). Where set, the check draws each chunk of
-  // samples, or integrates the density a refinement level at a time (batched_density.h),
+  // samples, or integrates the density a refinement level at a time (DensityBatchFn, quadrature.h),
   // through them.
   std::function<void(const std::vector<Uniform2>& u,
                      std::vector<std::optional<Eigen::Vector3d>>& out)>
