@@ -14,7 +14,7 @@
 #include "film/image_io.h"
 #include "testing/child_process.h"
 
-namespace verity {
+namespace verity::interrupt_test {
 namespace {
 
 using testing::spawn;
@@ -64,4 +64,4 @@ TEST(Interrupt, PartialImageEqualsRenderOfCompletedPasses) {
 }
 
 }  // namespace
-}  // namespace verity
+}  // namespace verity::interrupt_test

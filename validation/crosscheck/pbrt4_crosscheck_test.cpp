@@ -30,7 +30,7 @@
 #include "validation/compare/batch_regions.h"
 #include "validation/compare/comparison_family.h"
 
-namespace verity::validation {
+namespace verity::validation::pbrt4_crosscheck_test {
 namespace {
 
 constexpr int kTileSize = 8;
@@ -113,4 +113,4 @@ TEST(Pbrt4Crosscheck, ARoughGlassOfAnotherRoughnessIsRejected) {
 }
 
 }  // namespace
-}  // namespace verity::validation
+}  // namespace verity::validation::pbrt4_crosscheck_test

@@ -19,7 +19,7 @@
 #include "validation/compare/comparison_family.h"
 #include "validation/compare/suite_samplers.h"
 
-namespace verity::validation {
+namespace verity::validation::sampler_agreement_test {
 namespace {
 
 constexpr int kWidth = 32;
@@ -61,4 +61,4 @@ TEST(SamplerAgreement, EverySamplerEstimatesTheIndependentSamplersImage) {
 }
 
 }  // namespace
-}  // namespace verity::validation
+}  // namespace verity::validation::sampler_agreement_test

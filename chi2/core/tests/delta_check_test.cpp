@@ -19,7 +19,7 @@
 
 #include "phong_toy.h"
 
-namespace verity::chi2 {
+namespace verity::chi2::delta_check_test {
 
 namespace {
 
@@ -302,4 +302,4 @@ TEST(DeltaLobes, BadOptionsAreNamed) {
       std::invalid_argument);
 }
 
-}  // namespace verity::chi2
+}  // namespace verity::chi2::delta_check_test

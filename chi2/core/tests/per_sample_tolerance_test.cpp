@@ -18,7 +18,7 @@
 
 #include "lambert_toy.h"
 
-namespace verity::chi2 {
+namespace verity::chi2::per_sample_tolerance_test {
 
 namespace {
 
@@ -164,4 +164,4 @@ TEST(PerSampleTolerance, TheAuditKeepsTheWorstDeviationAcrossMerges) {
   EXPECT_EQ(ratioDeviation(1, 0), std::numeric_limits<double>::infinity());
 }
 
-}  // namespace verity::chi2
+}  // namespace verity::chi2::per_sample_tolerance_test

@@ -19,7 +19,7 @@
 #include <iostream>
 #include <numbers>
 
-namespace verity::chi2 {
+namespace verity::chi2::power_simulation_test {
 namespace {
 
 constexpr int kRuns = 200;
@@ -202,4 +202,4 @@ TEST(PowerSimulationIntegral, TheStatedNormalisationErrorIsFoundWithTheStatedPow
 }
 
 }  // namespace
-}  // namespace verity::chi2
+}  // namespace verity::chi2::power_simulation_test

@@ -17,7 +17,7 @@
 
 #include "lambert_toy.h"
 
-namespace verity::chi2 {
+namespace verity::chi2::sample_f_adapter_test {
 
 namespace {
 
@@ -154,4 +154,4 @@ TEST(SampleFAdapter, ASymmetricLobeCannotTellTheMappingsApart) {
   EXPECT_TRUE(swapped.passed()) << failed(swapped);
 }
 
-}  // namespace verity::chi2
+}  // namespace verity::chi2::sample_f_adapter_test

@@ -34,7 +34,7 @@ template <>
 struct verity::chi2::ValueSize<spectral_toy::Spectrum>
     : std::integral_constant<int, spectral_toy::kWavelengths> {};
 
-namespace verity::chi2 {
+namespace verity::chi2::spectral_value_test {
 
 namespace {
 
@@ -189,4 +189,4 @@ TEST(SpectralValues, AWeightOfAnotherFixedSizeIsADefect) {
       << failed(r);
 }
 
-}  // namespace verity::chi2
+}  // namespace verity::chi2::spectral_value_test

@@ -23,7 +23,7 @@
 
 #include "phong_toy.h"
 
-namespace verity::chi2 {
+namespace verity::chi2::stochastic_check_test {
 
 namespace {
 
@@ -149,4 +149,4 @@ TEST(StochasticBsdf, BadOptionsAreNamed) {
                std::invalid_argument);
 }
 
-}  // namespace verity::chi2
+}  // namespace verity::chi2::stochastic_check_test

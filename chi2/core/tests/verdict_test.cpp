@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-namespace verity::chi2 {
+namespace verity::chi2::verdict_test {
 namespace {
 
 // Uniform samples on the unit square with a claimed density `scale` (1 is right), or no
@@ -124,4 +124,4 @@ TEST(FrameworkVerdict, SignificanceOutsideTheUnitIntervalIsRefused) {
 }
 
 }  // namespace
-}  // namespace verity::chi2
+}  // namespace verity::chi2::verdict_test

@@ -33,7 +33,7 @@
 #include "render/renderer.h"
 #include "sampling/sampler.h"
 
-namespace verity {
+namespace verity::variance_calibration_test {
 namespace {
 
 constexpr int kWidth = 16, kSpp = 4;
@@ -156,4 +156,4 @@ TEST(VarianceCalibration, CorrelatedSamplersOverstateTheVarianceOfTheMeanAndAreR
 }
 
 }  // namespace
-}  // namespace verity
+}  // namespace verity::variance_calibration_test

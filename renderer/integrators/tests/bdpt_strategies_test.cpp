@@ -16,7 +16,7 @@
 
 #include "integrators/tests/bdpt_test_util.h"
 
-namespace verity {
+namespace verity::bdpt_strategies_test {
 namespace {
 
 using bdpt_test::RegionEstimate;
@@ -141,4 +141,4 @@ TEST_F(BdptStrategies, MissingStrategyFails) {
 }
 
 }  // namespace
-}  // namespace verity
+}  // namespace verity::bdpt_strategies_test

@@ -18,7 +18,7 @@
 
 #include "integrators/tests/bdpt_test_util.h"
 
-namespace verity {
+namespace verity::light_tracer_background_test {
 namespace {
 
 using bdpt_test::estimateRegions;
@@ -117,4 +117,4 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
-}  // namespace verity
+}  // namespace verity::light_tracer_background_test

@@ -14,7 +14,7 @@
 
 #include "integrators/tests/bdpt_test_util.h"
 
-namespace verity {
+namespace verity::light_tracer_normalisation_test {
 namespace {
 
 using bdpt_test::estimateRegions;
@@ -101,4 +101,4 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
-}  // namespace verity
+}  // namespace verity::light_tracer_normalisation_test

@@ -6,7 +6,7 @@
 #include "materials/oren_nayar.h"
 #include "materials/tests/material_test_util.h"
 
-namespace verity::test {
+namespace verity::test::material_specific_test {
 namespace {
 
 TextureQuery q;
@@ -198,4 +198,4 @@ TEST(MaterialFactory, RejectsBadParameters) {
 }
 
 }  // namespace
-}  // namespace verity::test
+}  // namespace verity::test::material_specific_test

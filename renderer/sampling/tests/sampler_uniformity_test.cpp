@@ -22,7 +22,7 @@
 #include "sampling/sobol_sampler.h"
 #include "sampling/stratified_sampler.h"
 
-namespace verity {
+namespace verity::sampler_uniformity_test {
 namespace {
 
 constexpr int kWidth = 48, kHeight = 48, kSamples = 64, kDimensions = 8;
@@ -114,4 +114,4 @@ TEST(SamplerUniformity, ChiSquareOverPixelsAndIndices) {
 }
 
 }  // namespace
-}  // namespace verity
+}  // namespace verity::sampler_uniformity_test
