@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <verity/chi2/quadrature.h>
 #include <verity/chi2/warp_adapter.h>
 
 #include "check_options.h"
@@ -90,6 +91,9 @@ PYBIND11_MODULE(verity, m) {
   });
   bindCheckResult(m);
   bindCompare(m);
+  // What a pdf callable is given per call by the quadrature: at least this many points but
+  // for a computation's last refinement levels, at most 2^18.
+  m.attr("DENSITY_BATCH_POINTS") = verity::chi2::kDensityBatchPoints;
   m.def("check_bsdf", &checkBsdf, py::arg("sample"), py::arg("eval"), py::arg("pdf"),
         R"(Checks a BSDF given as three batched callables, for one incident direction wi:
     sample(wi, u) -> (wo, weight, pdf[, delta])  wi (3,), u (N, 3) in [0, 1): u[:, 0] picks

@@ -15,6 +15,7 @@
 #include "chi2/suite/suite_significance.h"
 #include "failure_figure.h"
 #include "reference_ggx.h"
+#include "scratch_folder.h"
 
 namespace verity::chi2 {
 
@@ -86,14 +87,8 @@ TEST(BrokenSamplers, WeightOffByCosineIsRejected) {
 // here moved by VERITY_CHI2_FIGURES so that no figure of a passing test lies beside those of
 // real failures.
 TEST(BrokenSamplers, AFailureNamesItsFigure) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "verity-chi2-failure-figure";
-  std::filesystem::remove_all(dir);
-  // Removed again however the test ends: nothing is left in the temporary folder.
-  struct RemoveAtEnd {
-    std::filesystem::path dir;
-    ~RemoveAtEnd() { std::filesystem::remove_all(dir); }
-  } removeAtEnd{dir};
+  const suite::ScratchFolder folder("verity-chi2-failure-figure");
+  const std::filesystem::path& dir = folder.path();
   setenv("VERITY_CHI2_FIGURES", dir.c_str(), 1);
   const TestResult r = run(Flaw::MissingJacobian, 0, 30, false, "figure");
   ASSERT_FALSE(r.passed());

@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "scratch_folder.h"
+
 namespace verity::chi2 {
 
 namespace {
@@ -79,9 +81,8 @@ TEST(FrameworkFigure, AxesAreNamedFromTheDomain) {
 }
 
 TEST(FrameworkFigure, WritesTheDataFileAndAPng) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "verity-figure-test";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  const suite::ScratchFolder folder("verity-figure-test");
+  const std::filesystem::path& dir = folder.path();
   const TestResult r = smallResult(threeByTwo());
   const std::string png = writeFigure(r, (dir / "small").string());
   EXPECT_EQ(png, (dir / "small.png").string());
@@ -107,9 +108,8 @@ TEST(FrameworkFigure, EqualProbabilityCellsCarryEachStripsEdges) {
   for (int i = 0; i < d.nx; ++i)
     for (int k = 0; k <= d.ny; ++k) EXPECT_EQ(j["y_edges"][i][k].get<double>(), d.yEdge(i, k));
   EXPECT_NE(d.yEdge(0, 1), d.yEdge(2, 1));  // the strips' cuts differ
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "verity-figure-test";
-  std::filesystem::create_directories(dir);
-  std::ifstream image(writeFigure(r, (dir / "equal").string()), std::ios::binary);
+  const suite::ScratchFolder folder("verity-figure-test");
+  std::ifstream image(writeFigure(r, (folder.path() / "equal").string()), std::ios::binary);
   char magic[4] = {};
   image.read(magic, 4);
   EXPECT_EQ(std::string(magic, 4), "\x89PNG");
