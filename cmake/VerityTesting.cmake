@@ -1,5 +1,6 @@
 # verity_discover_tests(TARGET [NAME name] [PREFIX prefix] [FILTER gtest-filter]
-#                       [RESOURCE_LOCK lock] [WHOLE_SUITES suite...] LABELS label...):
+#                       [RESOURCE_LOCK lock] [COST seconds] [WHOLE_SUITES suite...]
+#                       LABELS label...):
 # registers a GoogleTest executable's tests (those FILTER selects) with CTest and gives every
 # discovered test all the labels. NAME tells apart several registrations of one target.
 # Labels are set after discovery because CMake 3.25's gtest discovery flattens list values
@@ -10,9 +11,12 @@
 # SetUpTestSuite makes once per process (registered test by test, each test's process made them
 # again). A failure names the test; a suite that selects no test (renamed, say) fails rather
 # than passing with nothing run. RESOURCE_LOCK keeps the tests from running at the same time
-# as any other test holding the same lock.
+# as any other test holding the same lock. COST is each test's time in seconds, about: CTest
+# starts the costliest tests first (a clean build has no record of past times), so that a
+# test of minutes does not start last, beside an idle core.
 function(verity_discover_tests target)
-  cmake_parse_arguments(ARG "" "NAME;PREFIX;FILTER;RESOURCE_LOCK" "WHOLE_SUITES;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "NAME;PREFIX;FILTER;RESOURCE_LOCK;COST" "WHOLE_SUITES;LABELS"
+                        ${ARGN})
   if(NOT ARG_NAME)
     set(ARG_NAME ${target})
   endif()
@@ -41,6 +45,9 @@ function(verity_discover_tests target)
   set(lock "")
   if(ARG_RESOURCE_LOCK)
     set(lock " RESOURCE_LOCK ${ARG_RESOURCE_LOCK}")
+  endif()
+  if(ARG_COST)
+    string(APPEND lock " COST ${ARG_COST}")
   endif()
   file(WRITE ${file} "if(${ARG_NAME}_TESTS)\n"
                      "  set_tests_properties(\${${ARG_NAME}_TESTS} PROPERTIES LABELS \"${labels}\"${lock})\n"

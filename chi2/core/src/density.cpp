@@ -27,8 +27,6 @@ void Density::evaluate() {
                 values_.begin() + static_cast<std::ptrdiff_t>(from));
     }
   }
-  ++batches_;
-  evaluations_ += static_cast<long long>(points_.size());
   // The computations take their values in the order they asked, and resume in that order.
   size_t next = 0;
   for (const Waiting& w : waiting_) {

@@ -1,8 +1,8 @@
 // Where a computation (task.h) gets its density values: point by point from a DensityFn, each
 // request answered at once, or from a DensityBatchFn, where every computation that asks waits
-// and the points that all of them asked for are evaluated in one call. The quadrature's
-// refinement then asks, in each batch, for every node of every cell at its next level: one
-// call per level, each point evaluated once, the same points and results as point by point.
+// and the points that all of them asked for are evaluated in one call, once they are
+// kDensityBatchPoints or nothing else can run. The same points are evaluated as point by
+// point, each once, with the same results.
 #pragma once
 
 #include <tbb/parallel_for.h>
@@ -81,9 +81,6 @@ class Density {
     }
     return task.result();
   }
-
-  long long batches() const { return batches_; }
-  long long evaluations() const { return evaluations_; }
 
  private:
   // The points a batch gathers before it is evaluated, while computations are left to start:
@@ -166,7 +163,6 @@ class Density {
   std::vector<Point2d> points_;  // the next batch, kept from batch to batch as values_ is
   std::vector<double> values_;
   std::vector<Waiting> waiting_;
-  long long batches_ = 0, evaluations_ = 0;
 };
 
 }  // namespace verity::chi2
