@@ -52,6 +52,7 @@ struct Chi2Args {
   std::string output;
   bool seedTable = false;
   std::string cells = "equal";  // chi2::parseCellLayout
+  bool timings = false;
 };
 
 Vector3f parseVector(const std::string& text) {
@@ -113,6 +114,7 @@ int runOne(const Chi2Args& a) {
     // The delta lobes on draws of their own: directions, weights, shares and albedos. The
     // renderer treats an interface within 1e-3 of index matching as a pass-through
     // (rough_dielectric.h), so only a larger contrast is held to Snell's law.
+    const chi2::PhaseTimer timer(r.phases, chi2::Phase::DeltaLobes);
     chi2::DeltaCheckOptions d;
     const double eta = subject.model().relativeIndex();
     if (std::abs(eta - 1) > 1e-3) d.eta = eta;
@@ -129,8 +131,19 @@ int runOne(const Chi2Args& a) {
   }
   if (!a.output.empty()) {
     prepareOutputFile(a.output + ".json", "-o");
+    const chi2::PhaseClock clock;
     const std::string figure = chi2::writeFigure(r, a.output);
+    r.phases.add(chi2::Phase::Figure, clock.seconds());
     std::cout << "  wrote " << figure << " (histogram in " << a.output << ".json)\n";
+  }
+  if (a.timings) {
+    long long binned = 0;
+    const double floor = subject.drawingFloorSeconds(r.domain, r.samples, options.seed, binned);
+    std::cout << fmt::format(
+        "  time by phase: {}; total {:.3f} s\n  floor: drawing the same {} samples on one "
+        "thread and binning them, without audit, density or statistics: {:.3f} s; the check "
+        "took {:.2f} times that\n",
+        r.phases.describe(), r.phases.total(), r.samples, floor, r.phases.total() / floor);
   }
   return exitStatus(verdict);
 }
@@ -246,6 +259,10 @@ void addChi2Command(CLI::App& app, const ProcessGroup& group) {
                   "many cells as a diffuse one; slower)")
       ->check(CLI::IsMember({"equal", "grid"}))
       ->default_str("equal");
+  cmd->add_flag("--timings", args->timings,
+                "print the seconds each phase took (cells, quadrature, drawing, audit, binning, "
+                "delta lobes, statistics, figure) beside the floor: the time to draw and bin "
+                "the same samples on one thread");
   cmd->add_flag("--seed-table", args->seedTable, "print the seed report's table next to ours");
   cmd->callback([args] {
     if (!args->seedTable && args->material.empty())

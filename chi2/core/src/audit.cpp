@@ -41,6 +41,7 @@ void Audit::record(Defect d, double deviation, const std::string& example) {
 }
 
 void Audit::merge(const Audit& other) {
+  seconds_ += other.seconds_;
   for (int i = 0; i < kKinds; ++i) {
     if (counts_[i] == 0 && other.counts_[i] > 0) examples_[i] = other.examples_[i];
     counts_[i] += other.counts_[i];

@@ -1,6 +1,7 @@
 #include <fmt/format.h>
 #include <verity/chi2/bsdf_adapter.h>
 #include <verity/chi2/bsdf_model_subject.h>
+#include <verity/chi2/phase_times.h>
 
 #include <stdexcept>
 #include <utility>
@@ -40,6 +41,7 @@ CheckResult checkBsdf(const BsdfModel& model, const Eigen::Vector3d& wi,
   r.deltaSamples = subject.deltaSamples();
   // The delta lobes, which the histogram leaves out, on a pass of their own.
   if (r.deltaSamples > 0 || options.delta.statisticalTests() > 0) {
+    const PhaseTimer timer(r.test.phases, Phase::DeltaLobes);
     r.delta = checkDeltaLobes(model, setup.wi, options.delta, options.samples, options.significance,
                               options.seed ? *options.seed : seedFromName(setup.name));
     r.test.deltaLobesChecked = r.delta.deltaSamples > 0;

@@ -2,6 +2,7 @@
 #include <fmt/ranges.h>
 #include <tbb/parallel_for.h>
 #include <verity/chi2/bsdf_model_subject.h>
+#include <verity/chi2/phase_times.h>
 
 #include <cmath>
 
@@ -62,26 +63,38 @@ bool BsdfModelSubject::evaluable(const std::optional<DirectionSample>& s) {
   return s && !s->delta && s->pdf != 0 && s->wo.allFinite() && std::fabs(s->wo.norm() - 1) <= 1e-3;
 }
 
+// eval(wi, wo), pdf(wi, wo) and eval(wo, wi) asked of the model one direction at a time.
+struct BsdfModelSubject::PointByPoint {
+  const BsdfModelSubject& s;
+  Eigen::ArrayXd eval(const Vector3d& wo) const { return s.model_.eval(s.setup_.wi, wo); }
+  double pdf(const Vector3d& wo) const { return s.model_.pdf(s.setup_.wi, wo); }
+  Eigen::ArrayXd reversed(const Vector3d& wo) const { return s.model_.eval(wo, s.setup_.wi); }
+};
+
 std::optional<Point2d> BsdfModelSubject::sample(pcg32& rng, Audit& audit) const {
   const BsdfUniforms u = drawUniforms(rng);
-  const Vector3d& wi = setup_.wi;
-  struct PointByPoint {
-    const BsdfModelSubject& s;
-    Eigen::ArrayXd eval(const Vector3d& wo) const { return s.model_.eval(s.setup_.wi, wo); }
-    double pdf(const Vector3d& wo) const { return s.model_.pdf(s.setup_.wi, wo); }
-    Eigen::ArrayXd reversed(const Vector3d& wo) const { return s.model_.eval(wo, s.setup_.wi); }
-  };
-  return audited(u, model_.sample(wi, u), PointByPoint{*this}, audit);
+  return audited(u, model_.sample(setup_.wi, u), PointByPoint{*this}, audit);
 }
 
 void BsdfModelSubject::sampleBatch(pcg32& rng, std::vector<std::optional<Point2d>>& out,
                                    Audit& audit) const {
-  if (!model_.sampleBatch || !model_.evalBatch) return Subject::sampleBatch(rng, out, audit);
+  // The samples are drawn first and audited after, which draws from rng as sample() would
+  // (the model takes only the uniforms) and lets the audit's cost be timed apart.
   const Vector3d& wi = setup_.wi;
   std::vector<BsdfUniforms> us(out.size());
   for (BsdfUniforms& u : us) u = drawUniforms(rng);
   std::vector<std::optional<DirectionSample>> drawn(out.size());
-  model_.sampleBatch(wi, us, drawn);
+  if (model_.sampleBatch)
+    model_.sampleBatch(wi, us, drawn);
+  else
+    for (size_t k = 0; k < out.size(); ++k) drawn[k] = model_.sample(wi, us[k]);
+  const PhaseClock clock;
+  if (!model_.evalBatch) {
+    for (size_t k = 0; k < out.size(); ++k)
+      out[k] = audited(us[k], drawn[k], PointByPoint{*this}, audit);
+    audit.addSeconds(clock.seconds());
+    return;
+  }
   // The directions to evaluate, each evaluation in one batch.
   std::vector<size_t> index(out.size(), 0);
   std::vector<Vector3d> wos;
@@ -112,6 +125,34 @@ void BsdfModelSubject::sampleBatch(pcg32& rng, std::vector<std::optional<Point2d
   };
   for (size_t k = 0; k < out.size(); ++k)
     out[k] = audited(us[k], drawn[k], Batch{f, p, fr, index[k]}, audit);
+  audit.addSeconds(clock.seconds());
+}
+
+double BsdfModelSubject::drawingFloorSeconds(const Domain& cells, long long n, uint64_t seed,
+                                             long long& binned) const {
+  const PhaseClock clock;
+  std::vector<long long> hist(cells.cells(), 0);
+  constexpr long long kChunk = 1 << 16;
+  std::vector<BsdfUniforms> us;
+  std::vector<std::optional<DirectionSample>> drawn;
+  for (long long c = 0; c * kChunk < n; ++c) {
+    pcg32 rng(seed, static_cast<uint64_t>(c));
+    us.resize(std::min(kChunk, n - c * kChunk));
+    drawn.resize(us.size());
+    for (BsdfUniforms& u : us) u = drawUniforms(rng);
+    if (model_.sampleBatch)
+      model_.sampleBatch(setup_.wi, us, drawn);
+    else
+      for (size_t k = 0; k < us.size(); ++k) drawn[k] = model_.sample(setup_.wi, us[k]);
+    for (const std::optional<DirectionSample>& s : drawn) {
+      if (!evaluable(s)) continue;
+      const int cell = cells.cellOf(sphereCoords(setup_.frame.toWorld(s->wo)));
+      if (cell >= 0) ++hist[cell];
+    }
+  }
+  binned = 0;
+  for (long long h : hist) binned += h;
+  return clock.seconds();
 }
 
 void BsdfModelSubject::pdfBatch(const std::vector<Point2d>& points,

@@ -84,6 +84,12 @@ std::string figureJson(const TestResult& r) {
                    {"description", r.integral.describe()},
                    {"quadrature_error", r.quadratureError}};
   j["audit"] = {{"passed", r.audit.clean()}, {"description", r.audit.describe()}};
+  // Seconds per phase (phase_times.h) as far as the check had gone when this was written.
+  nlohmann::json phases;
+  for (int p = 0; p < static_cast<int>(Phase::Count); ++p)
+    phases[phaseName(static_cast<Phase>(p))] = r.phases[static_cast<Phase>(p)];
+  j["seconds"] = r.seconds;
+  j["phases"] = phases;
   return j.dump();
 }
 

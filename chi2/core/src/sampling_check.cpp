@@ -3,8 +3,6 @@
 #include <verity/chi2/partition.h>
 #include <verity/chi2/sampling_check.h>
 
-#include <atomic>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -65,7 +63,7 @@ void validate(const TestOptions& options) {
 }  // namespace
 
 TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const PhaseClock start;
   validate(options);
   TestResult r;
   r.subject = subject.describe();
@@ -75,15 +73,24 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   // The claimed density over every cell first: a caller's target sizes the sample count from
   // it. Non-finite or negative values are defects, and are replaced by zero so that the
   // quadrature still terminates.
-  std::atomic<long long> badPdf{0}, negativePdf{0};
-  std::mutex exampleMutex;
-  std::string badExample;
+  // Each kind's example is its bad value at the least point (x, then y), whichever thread
+  // meets it first, so that the report is the same for any number of threads.
+  struct BadValues {
+    long long count = 0;
+    std::optional<Point2d> at;
+    double value = 0;
+  };
+  std::mutex badMutex;
+  BadValues nonFinite, negative;
   auto checked = [&](double v, double x, double y) {
     if (std::isfinite(v) && v >= 0) return v;
-    (std::isfinite(v) ? negativePdf : badPdf)++;
-    std::lock_guard lock(exampleMutex);
-    if (badExample.empty())
-      badExample = fmt::format("pdf() = {} at domain point ({}, {})", v, x, y);
+    std::lock_guard lock(badMutex);
+    BadValues& bad = std::isfinite(v) ? negative : nonFinite;
+    ++bad.count;
+    if (!bad.at || std::pair(x, y) < std::pair(bad.at->x(), bad.at->y())) {
+      bad.at = Point2d(x, y);
+      bad.value = v;
+    }
     return 0.0;
   };
   const DensityFeatures features{[&](double x) { return subject.breakpointsY(x); },
@@ -92,20 +99,24 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   // partition.h), and the claimed density over each; through batches of points where the
   // subject evaluates its density so, with the same figures (DensityBatchFn).
   std::vector<CellIntegral> integrals;
-  if (subject.batchedPdf()) {
-    const DensityBatchFn pdf = [&](const std::vector<Point2d>& points,
-                                   std::vector<double>& values) {
-      subject.pdfBatch(points, values);
-      for (size_t k = 0; k < points.size(); ++k)
-        values[k] = checked(values[k], points[k].x(), points[k].y());
-    };
-    r.domain = cellsFor(subject.domain(), options.cells, pdf, features, options.quadrature);
+  auto cellsAndIntegrals = [&](const auto& pdf) {
+    {
+      const PhaseTimer timer(r.phases, Phase::Cells);
+      r.domain = cellsFor(subject.domain(), options.cells, pdf, features, options.quadrature);
+    }
+    const PhaseTimer timer(r.phases, Phase::Quadrature);
     integrals = integrateGrid(pdf, r.domain, options.quadrature, features);
-  } else {
-    const DensityFn pdf = [&](double x, double y) { return checked(subject.pdf(x, y), x, y); };
-    r.domain = cellsFor(subject.domain(), options.cells, pdf, features, options.quadrature);
-    integrals = integrateGrid(pdf, r.domain, options.quadrature, features);
-  }
+  };
+  if (subject.batchedPdf())
+    cellsAndIntegrals(
+        DensityBatchFn([&](const std::vector<Point2d>& points, std::vector<double>& values) {
+          subject.pdfBatch(points, values);
+          for (size_t k = 0; k < points.size(); ++k)
+            values[k] = checked(values[k], points[k].x(), points[k].y());
+        }));
+  else
+    cellsAndIntegrals(
+        DensityFn([&](double x, double y) { return checked(subject.pdf(x, y), x, y); }));
   const Domain& d = r.domain;
   const int cells = d.cells();
   r.probability.resize(cells);
@@ -135,11 +146,16 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   std::vector<std::vector<long long>> partial(chunks);
   std::vector<long long> validPerChunk(chunks, 0), outsidePerChunk(chunks, 0);
   std::vector<Audit> audits(chunks);
+  std::vector<double> drawSeconds(chunks), binSeconds(chunks);
+  const PhaseClock samplingClock;
   tbb::parallel_for(0LL, chunks, [&](long long c) {
+    const PhaseClock drawClock;
     pcg32 rng(options.seed, static_cast<uint64_t>(c));
     std::vector<long long> hist(cells, 0);
     std::vector<std::optional<Point2d>> points(std::min(kChunk, r.samples - c * kChunk));
     subject.sampleBatch(rng, points, audits[c]);
+    drawSeconds[c] = drawClock.seconds();
+    const PhaseClock binClock;
     for (const std::optional<Point2d>& p : points) {
       if (!p) continue;
       ++validPerChunk[c];
@@ -151,20 +167,40 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
       ++hist[cell];
     }
     partial[c] = std::move(hist);
+    binSeconds[c] = binClock.seconds();
   });
+  const double samplingSeconds = samplingClock.seconds();
   r.observed.assign(cells, 0);
+  double drawn = 0, binned = 0;
   for (long long c = 0; c < chunks; ++c) {
     for (int i = 0; i < cells; ++i) r.observed[i] += partial[c][i];
     r.valid += validPerChunk[c];
     r.outside += outsidePerChunk[c];
+    drawn += drawSeconds[c];
+    binned += binSeconds[c];
   }
 
   r.deltaSamples = subject.deltaSamples() - deltaBefore;
   for (const Audit& a : audits) r.audit.merge(a);
-  if (badPdf) r.audit.record(Defect::NonFinite, badExample);
-  if (negativePdf) r.audit.record(Defect::Negative, badExample);
-  subject.extraChecks(r.audit);
-
+  // The sampling's wall-clock time shared out by thread-seconds: the subject's sampleBatch
+  // times its own audit (Audit::addSeconds), the rest of it is drawing.
+  const double audited = std::min(r.audit.seconds(), drawn);
+  if (drawn + binned > 0) {
+    const double share = samplingSeconds / (drawn + binned);
+    r.phases.add(Phase::Drawing, (drawn - audited) * share);
+    r.phases.add(Phase::Audit, audited * share);
+    r.phases.add(Phase::Binning, binned * share);
+  }
+  for (const auto& [defect, bad] :
+       {std::pair(Defect::NonFinite, &nonFinite), std::pair(Defect::Negative, &negative)})
+    if (bad->count > 0)
+      r.audit.record(defect, fmt::format("pdf() = {} at domain point ({}, {})", bad->value,
+                                         bad->at->x(), bad->at->y()));
+  {
+    const PhaseTimer timer(r.phases, Phase::Audit);
+    subject.extraChecks(r.audit);
+  }
+  const PhaseClock statistics;
   // Chi-square on the shape: given the number of valid samples, they are distributed
   // according to pdf / ∫pdf.
   r.expected.resize(cells);
@@ -177,7 +213,8 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
                                       options.power);
   r.integralPower =
       integralPower(total, r.samples, r.significance, options.integralTolerance, options.power);
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.phases.add(Phase::Statistics, statistics.seconds());
+  r.seconds = start.seconds();
   return r;
 }
 

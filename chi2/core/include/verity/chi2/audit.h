@@ -51,6 +51,10 @@ class Audit {
   const std::string& worstExample(Defect d) const { return worstExamples_[static_cast<int>(d)]; }
   bool clean() const;
   std::string describe() const;
+  // The seconds the checks took, which a Subject adds and merge() sums: a check's audit phase
+  // (phase_times.h).
+  void addSeconds(double seconds) { seconds_ += seconds; }
+  double seconds() const { return seconds_; }
 
  private:
   static constexpr int kKinds = static_cast<int>(Defect::Count);
@@ -58,6 +62,7 @@ class Audit {
   std::array<std::string, kKinds> examples_{};
   std::array<double, kKinds> worst_{};
   std::array<std::string, kKinds> worstExamples_{};
+  double seconds_ = 0;
 };
 
 }  // namespace verity::chi2

@@ -57,9 +57,15 @@ class BsdfModelSubject : public Subject {
   // The model and its incident direction in the local frame, for checks of its own
   // (delta_check.h) on the same BSDF.
   const BsdfModel& model() const { return model_; }
+  // The least any check of n samples must spend: the seconds to draw them from the model on
+  // one thread, as sampleBatch draws them from `seed`'s streams, and histogram them in
+  // `cells`, with no audit, density or statistics. Returns the valid samples in `binned`.
+  double drawingFloorSeconds(const Domain& cells, long long n, uint64_t seed,
+                             long long& binned) const;
   const Vector3d& localWi() const { return setup_.wi; }
 
  private:
+  struct PointByPoint;
   // The per-sample checks of the sample s drawn with u; eval(wi, wo), pdf(wi, wo) and
   // eval(wo, wi) come from `values` (point by point, or a batch's), asked for only for a
   // sample that needs them (evaluable).

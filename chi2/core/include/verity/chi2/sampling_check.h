@@ -7,6 +7,7 @@
 #include <verity/chi2/chi_square.h>
 #include <verity/chi2/integral_check.h>
 #include <verity/chi2/partition.h>
+#include <verity/chi2/phase_times.h>
 #include <verity/chi2/power.h>
 #include <verity/chi2/quadrature.h>
 #include <verity/chi2/subject.h>
@@ -60,7 +61,11 @@ struct TestResult {
   ChiSquareResult chiSquare;
   IntegralCheck integral;
   Audit audit;
-  double seconds = 0;
+  double seconds = 0;  // the whole test, as the report's last line says
+  // Its phases. Drawing, audit and binning run together over the threads: their wall-clock
+  // time is shared out in proportion to the thread-seconds each took. The caller adds the
+  // delta lobes' and the figure's.
+  PhaseTimes phases;
 
   double integralTolerance = 0;  // the stated quadrature tolerance on ∫pdf
   // Delta-lobe samples were drawn and checked apart (delta_check.h): with no valid sample
