@@ -1,6 +1,7 @@
 #include "commands/chi2_command.h"
 
 #include <fmt/format.h>
+#include <unistd.h>
 #include <verity/chi2/check_result.h>
 #include <verity/chi2/delta_check.h>
 #include <verity/chi2/significance.h>
@@ -11,6 +12,7 @@
 
 #include "chi2/suite/figure.h"
 #include "chi2/suite/suite.h"
+#include "cli/check_progress_display.h"
 #include "cli/exit_status.h"
 #include "cli/number_options.h"
 #include "cli/output_paths.h"
@@ -107,10 +109,14 @@ int runOne(const Chi2Args& a) {
   s.wi = chi2::incidentDirection(a.incoming, a.inside);
   s.resolution = chi2::suite::kSphereResolution;
   chi2::BsdfSubject subject(s);
-  const chi2::TestOptions options = testOptions(a);
+  chi2::TestOptions options = testOptions(a);
+  chi2::CheckProgress progress;
+  options.progress = &progress;
+  std::optional<CheckProgressDisplay> display(std::in_place, progress, isatty(STDERR_FILENO));
   chi2::TestResult r = chi2::runSamplingTest(subject, options);
   std::optional<chi2::DeltaCheck> delta;
   if (r.deltaSamples > 0) {
+    progress.phase = chi2::Phase::DeltaLobes;
     // The delta lobes on draws of their own: directions, weights, shares and albedos. The
     // renderer treats an interface within 1e-3 of index matching as a pass-through
     // (rough_dielectric.h), so only a larger contrast is held to Snell's law.
@@ -122,6 +128,7 @@ int runOne(const Chi2Args& a) {
                                   options.seed);
     r.deltaLobesChecked = true;
   }
+  display.reset();
   printResult(r, a);
   chi2::Verdict verdict = r.verdict();
   if (delta) {

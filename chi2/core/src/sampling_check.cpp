@@ -99,11 +99,16 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   // partition.h), and the claimed density over each; through batches of points where the
   // subject evaluates its density so, with the same figures (DensityBatchFn).
   std::vector<CellIntegral> integrals;
+  auto reached = [&](Phase phase) {
+    if (options.progress) options.progress->phase = phase;
+  };
   auto cellsAndIntegrals = [&](const auto& pdf) {
+    reached(Phase::Cells);
     {
       const PhaseTimer timer(r.phases, Phase::Cells);
       r.domain = cellsFor(subject.domain(), options.cells, pdf, features, options.quadrature);
     }
+    reached(Phase::Quadrature);
     const PhaseTimer timer(r.phases, Phase::Quadrature);
     integrals = integrateGrid(pdf, r.domain, options.quadrature, features);
   };
@@ -148,6 +153,8 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   std::vector<Audit> audits(chunks);
   std::vector<double> drawSeconds(chunks), binSeconds(chunks);
   const PhaseClock samplingClock;
+  reached(Phase::Drawing);
+  if (options.progress) options.progress->samples = r.samples;
   tbb::parallel_for(0LL, chunks, [&](long long c) {
     const PhaseClock drawClock;
     pcg32 rng(options.seed, static_cast<uint64_t>(c));
@@ -155,6 +162,7 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
     std::vector<std::optional<Point2d>> points(std::min(kChunk, r.samples - c * kChunk));
     subject.sampleBatch(rng, points, audits[c]);
     drawSeconds[c] = drawClock.seconds();
+    if (options.progress) options.progress->drawn += static_cast<long long>(points.size());
     const PhaseClock binClock;
     for (const std::optional<Point2d>& p : points) {
       if (!p) continue;
@@ -197,9 +205,11 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
       r.audit.record(defect, fmt::format("pdf() = {} at domain point ({}, {})", bad->value,
                                          bad->at->x(), bad->at->y()));
   {
+    reached(Phase::Audit);
     const PhaseTimer timer(r.phases, Phase::Audit);
     subject.extraChecks(r.audit);
   }
+  reached(Phase::Statistics);
   const PhaseClock statistics;
   // Chi-square on the shape: given the number of valid samples, they are distributed
   // according to pdf / ∫pdf.
@@ -214,6 +224,7 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   r.integralPower =
       integralPower(total, r.samples, r.significance, options.integralTolerance, options.power);
   r.phases.add(Phase::Statistics, statistics.seconds());
+  reached(Phase::Count);
   r.seconds = start.seconds();
   return r;
 }

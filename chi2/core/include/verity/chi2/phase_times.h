@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <string>
 
@@ -45,6 +46,14 @@ class PhaseClock {
 
  private:
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+// What a running check has reached, for a display on another thread (`verity chi2` shows it on
+// a terminal once a check has run a few seconds): its phase and, while it draws, how many of its
+// samples are drawn. Phase::Count before it starts and after it ends.
+struct CheckProgress {
+  std::atomic<Phase> phase{Phase::Count};
+  std::atomic<long long> drawn{0}, samples{0};
 };
 
 // Adds the seconds from its construction to its destruction to `times`' phase.

@@ -38,6 +38,8 @@ struct TestOptions {
   // maxSamples; a target beyond that budget is never PASSED.
   std::optional<DetectionTarget> detect;
   long long maxSamples = 100'000'000;
+  // Where the test has got to, updated as it runs, for a display (phase_times.h); none if null.
+  CheckProgress* progress = nullptr;
 };
 
 // What a sampling test concluded. PASSED only when every check ran with the power it
