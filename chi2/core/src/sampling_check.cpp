@@ -164,16 +164,20 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
     drawSeconds[c] = drawClock.seconds();
     if (options.progress) options.progress->drawn += static_cast<long long>(points.size());
     const PhaseClock binClock;
+    // Counted in locals: the per-block vectors share cache lines between the threads.
+    long long valid = 0, outside = 0;
     for (const std::optional<Point2d>& p : points) {
       if (!p) continue;
-      ++validPerChunk[c];
+      ++valid;
       const int cell = d.cellOf(*p);
       if (cell < 0 || !d.inSupport(*p)) {
-        ++outsidePerChunk[c];
+        ++outside;
         continue;
       }
       ++hist[cell];
     }
+    validPerChunk[c] = valid;
+    outsidePerChunk[c] = outside;
     partial[c] = std::move(hist);
     binSeconds[c] = binClock.seconds();
   });
