@@ -85,14 +85,30 @@ StochasticCheck checkStochasticBsdf(const BsdfModel& model, const Eigen::Vector3
                   options.name.empty() ? "stochastic bsdf" : options.name, wi.x(), wi.y(), wi.z());
   const uint64_t seed = options.seed ? *options.seed : seedFromName(r.subject);
   const Domain d = sphereDomain(options.resolution > 0 ? options.resolution : 8);
-  const int cells = d.cells(), comps = model.components;
+  // Values of any size (RGB, four wavelengths, ...); one whose size only run time tells takes
+  // that of eval at wi's mirror direction, as checkBsdf does.
+  const int comps =
+      model.components > 0
+          ? model.components
+          : static_cast<int>(model.eval(wi, Vector3d(-wi.x(), -wi.y(), wi.z())).size());
+  const int cells = d.cells();
+  const auto values = [](const Eigen::ArrayXd& v) {
+    return fmt::format("({})", fmt::join(v.data(), v.data() + v.size(), ", "));
+  };
+  // Whether v has the check's size; records the defect where not, `where()` naming the place.
+  const auto sized = [&](const Eigen::ArrayXd& v, const char* what, auto&& where) {
+    if (v.size() == comps) return true;
+    r.audit.record(Defect::Size, fmt::format("{} {} has {} component(s), the BSDF {}, at {}", what,
+                                             values(v), v.size(), comps, where()));
+    return false;
+  };
   r.significance = options.significance;
   r.samples = options.samples;
   r.cells = cells;
   r.components = comps;
 
   // Sampling: weight·1[cell] summed per cell and component.
-  std::vector<Eigen::Array3d> sum(cells, Eigen::Array3d::Zero()), sumSquares = sum;
+  std::vector<Eigen::ArrayXd> sum(cells, Eigen::ArrayXd::Zero(comps)), sumSquares = sum;
   pcg32 rng(seed, 0);
   std::vector<long long> hits(cells, 0);
   for (long long k = 0; k < options.samples; ++k) {
@@ -111,9 +127,9 @@ StochasticCheck checkStochasticBsdf(const BsdfModel& model, const Eigen::Vector3
                          fmt::join(wi.data(), wi.data() + 3, ", "), u.lobe, u.xy.x, u.xy.y,
                          fmt::join(s->wo.data(), s->wo.data() + 3, ", "));
     };
+    if (!sized(s->weight, "weight", at)) continue;
     if (!s->wo.allFinite() || !s->weight.allFinite()) {
-      r.audit.record(Defect::NonFinite, fmt::format("weight ({}, {}, {}) at {}", s->weight[0],
-                                                    s->weight[1], s->weight[2], at()));
+      r.audit.record(Defect::NonFinite, fmt::format("weight {} at {}", values(s->weight), at()));
       continue;
     }
     if (std::fabs(s->wo.norm() - 1) > 1e-3) {
@@ -136,24 +152,26 @@ StochasticCheck checkStochasticBsdf(const BsdfModel& model, const Eigen::Vector3
   const int m = options.strata;
   const double strata = double(m) * m, pairs = strata / 2;
   const double area = d.cellWidth() * d.cellHeight();  // dω = dφ d(cos θ)
-  std::vector<std::array<Estimate, 3>> evaluated(cells);
+  std::vector<std::vector<Estimate>> evaluated(cells, std::vector<Estimate>(comps));
   for (int c = 0; c < cells; ++c) {
-    auto at = [&](int i, int j) {
+    auto at = [&](int i, int j) -> Eigen::ArrayXd {
       const double phi = (c % d.nx + (i + uniform01(jitter)) / m) * d.cellWidth();
       const double z = d.y0 + (c / d.nx + (j + uniform01(jitter)) / m) * d.cellHeight();
       const Vector3d wo = sphereDirection(phi, z);
-      const Eigen::Array3d y = model.eval(wi, wo) * std::fabs(wo.z());
+      const Eigen::ArrayXd y = model.eval(wi, wo) * std::fabs(wo.z());
+      const auto where = [&] {
+        return fmt::format("wi=({:.7g}) wo=({:.7g})", fmt::join(wi.data(), wi.data() + 3, ", "),
+                           fmt::join(wo.data(), wo.data() + 3, ", "));
+      };
+      if (!sized(y, "eval", where)) return Eigen::ArrayXd::Zero(comps);
       if (y.allFinite()) return y;
-      r.audit.record(Defect::NonFinite,
-                     fmt::format("eval ({}, {}, {}) at wi=({:.7g}) wo=({:.7g})", y[0], y[1], y[2],
-                                 fmt::join(wi.data(), wi.data() + 3, ", "),
-                                 fmt::join(wo.data(), wo.data() + 3, ", ")));
-      return Eigen::Array3d(Eigen::Array3d::Zero());
+      r.audit.record(Defect::NonFinite, fmt::format("eval {} at {}", values(y), where()));
+      return Eigen::ArrayXd::Zero(comps);
     };
-    Eigen::Array3d ySum = Eigen::Array3d::Zero(), pairSquares = Eigen::Array3d::Zero();
+    Eigen::ArrayXd ySum = Eigen::ArrayXd::Zero(comps), pairSquares = ySum;
     for (int j = 0; j < m; ++j)
       for (int i = 0; i < m; i += 2) {
-        const Eigen::Array3d a = at(i, j), b = at(i + 1, j);
+        const Eigen::ArrayXd a = at(i, j), b = at(i + 1, j);
         ySum += a + b;
         pairSquares += (a - b).square();
       }
