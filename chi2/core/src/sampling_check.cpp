@@ -172,7 +172,7 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
     r.expected[i] = total > 0 ? r.valid * r.probability[i] / total : 0.0;
   r.chiSquare = chiSquareTest(r.expected, r.observed, outrightThreshold(r.significance, cells));
   r.integral = checkIntegral(total, r.samples, r.valid, r.significance, options.integralTolerance);
-  if (!r.chiSquare.degenerate)
+  if (r.chiSquareRan())
     r.chiSquarePower = chiSquarePower(r.chiSquare.dof, static_cast<double>(r.valid), r.significance,
                                       options.power);
   r.integralPower =
