@@ -16,7 +16,9 @@
 #include "cli/output_paths.h"
 #include "cli/seed_option.h"
 #include "cli/subcommand.h"
+#include "cli/threads_option.h"
 #include "cli/verdict_command.h"
+#include "core/thread_arena.h"
 
 namespace verity {
 
@@ -52,6 +54,7 @@ struct Chi2Args {
   std::string output;
   bool seedTable = false;
   std::string cells = "equal";  // chi2::parseCellLayout
+  int threads = 0;
 };
 
 Vector3f parseVector(const std::string& text) {
@@ -247,11 +250,13 @@ void addChi2Command(CLI::App& app, const ProcessGroup& group) {
       ->check(CLI::IsMember({"equal", "grid"}))
       ->default_str("equal");
   cmd->add_flag("--seed-table", args->seedTable, "print the seed report's table next to ours");
+  addThreadsOption(cmd, args->threads, MpiUse::OneProcess);
   cmd->callback([args] {
     if (!args->seedTable && args->material.empty())
       throw CLI::RequiredError("--material (or --seed-table)");
-    const int status =
-        runVerdictCommand([&] { return args->seedTable ? seedTable(*args) : runOne(*args); });
+    const int status = ThreadArena(args->threads).execute([&] {
+      return runVerdictCommand([&] { return args->seedTable ? seedTable(*args) : runOne(*args); });
+    });
     if (status != kPassed) throw CLI::RuntimeError(status);
   });
 }
