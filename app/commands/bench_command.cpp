@@ -12,6 +12,7 @@
 #include "cli/max_bounces_option.h"
 #include "cli/number_options.h"
 #include "cli/subcommand.h"
+#include "cli/threads_option.h"
 #include "core/error.h"
 #include "film/image_io.h"
 #include "integrators/integrator_registry.h"
@@ -342,8 +343,7 @@ void addBenchCommand(CLI::App& app, const ProcessGroup& group) {
   cmd->add_option("--integrator", args->integrators,
                   "Integrators compared with --reference, comma-separated")
       ->delimiter(',');
-  cmd->add_option("--threads", args->threads, "Threads of the --reference renders; 0: all cores")
-      ->check(wholeNumber(0));
+  addThreadsOption(cmd, args->threads, MpiUse::OneProcess, "of the --reference renders");
   cmd->add_option("--rr-depth", args->rrDepths,
                   "Russian roulette depths compared with --reference, comma-separated: the "
                   "scattering event after which roulette first decides (the integrator's "

@@ -18,7 +18,9 @@
 #include "cli/output_paths.h"
 #include "cli/seed_option.h"
 #include "cli/subcommand.h"
+#include "cli/threads_option.h"
 #include "cli/verdict_command.h"
+#include "core/thread_arena.h"
 
 namespace verity {
 
@@ -55,6 +57,7 @@ struct Chi2Args {
   bool seedTable = false;
   std::string cells = "equal";  // chi2::parseCellLayout
   bool timings = false;
+  int threads = 0;
 };
 
 Vector3f parseVector(const std::string& text) {
@@ -271,11 +274,13 @@ void addChi2Command(CLI::App& app, const ProcessGroup& group) {
                 "delta lobes, statistics, figure) beside the floor: the time to draw and bin "
                 "the same samples on one thread");
   cmd->add_flag("--seed-table", args->seedTable, "print the seed report's table next to ours");
+  addThreadsOption(cmd, args->threads, MpiUse::OneProcess);
   cmd->callback([args] {
     if (!args->seedTable && args->material.empty())
       throw CLI::RequiredError("--material (or --seed-table)");
-    const int status =
-        runVerdictCommand([&] { return args->seedTable ? seedTable(*args) : runOne(*args); });
+    const int status = ThreadArena(args->threads).execute([&] {
+      return runVerdictCommand([&] { return args->seedTable ? seedTable(*args) : runOne(*args); });
+    });
     if (status != kPassed) throw CLI::RuntimeError(status);
   });
 }

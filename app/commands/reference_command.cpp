@@ -7,6 +7,7 @@
 #include "cli/output_paths.h"
 #include "cli/seed_option.h"
 #include "cli/subcommand.h"
+#include "cli/threads_option.h"
 #include "integrators/integrator_settings.h"
 #include "validation/studies/reference.h"
 
@@ -23,10 +24,7 @@ void addReferenceCommand(CLI::App& app, const ProcessGroup& group) {
   cmd->add_option("--integrator", config->integrator, "Integrator type")
       ->default_str("the scene's");
   addMaxBouncesOption(cmd, config->maxBounces);
-  cmd->add_option("--threads", config->threads,
-                  "Worker threads per process; 0: all cores (under mpirun, the host's cores "
-                  "shared among its ranks)")
-      ->check(wholeNumber(0));
+  addThreadsOption(cmd, config->threads, MpiUse::SplitsWork);
   cmd->add_option("--resolution", config->resolution,
                   "Image width in pixels, the scene's aspect ratio kept")
       ->default_str("the scene's")

@@ -11,6 +11,7 @@
 #include "cli/output_paths.h"
 #include "cli/seed_option.h"
 #include "cli/subcommand.h"
+#include "cli/threads_option.h"
 #include "commands/component_output.h"
 #include "distributed/distributed_render.h"
 #include "film/image_io.h"
@@ -245,10 +246,7 @@ void addRenderCommand(CLI::App& app, const ProcessGroup& group) {
                   "Image width in pixels, the scene's aspect ratio kept")
       ->default_str("the scene's")
       ->check(wholeNumber(1));
-  cmd->add_option("--threads", args->threads,
-                  "Worker threads per process; 0: all cores (under mpirun, the host's cores "
-                  "shared among its ranks)")
-      ->check(wholeNumber(0));
+  addThreadsOption(cmd, args->threads, MpiUse::SplitsWork);
   addSeedOption(cmd, args->seed, "Seed of the render's random numbers (0 to 2^64 - 1)")
       ->default_str("0");
   cmd->add_option("--integrator", args->integrator, integratorTypeList())

@@ -6,6 +6,7 @@
 #include "cli/number_options.h"
 #include "cli/output_paths.h"
 #include "cli/subcommand.h"
+#include "cli/threads_option.h"
 #include "integrators/integrator_settings.h"
 #include "sampling/sampler_registry.h"
 #include "validation/studies/convergence.h"
@@ -77,9 +78,7 @@ void addConvergence(CLI::App& study, const ProcessGroup& group) {
   cmd->add_option("--runs", config->runs, "Independent runs per integrator, sampler and budget")
       ->check(wholeNumber(1));
   const Budgets budgets = addBudgetOptions(cmd, "Budgets in samples per pixel, comma-separated");
-  cmd->add_option("--threads", config->threads, "Thread counts, comma-separated; 0: all cores")
-      ->delimiter(',')
-      ->check(wholeNumber(0));
+  addThreadCountsOption(cmd, config->threads, 0);
   cmd->add_option("--reference", *reference, "Reference EXR with variance channels")
       ->default_str("references/<scene>.exr");
   cmd->add_option("-o,--output", *output,
@@ -117,9 +116,7 @@ void addSpeedup(CLI::App& study, const ProcessGroup& group) {
       "efficiency",
       MpiUse::SplitsWork, group);
   cmd->add_option("scene", config->scene, "Scene file (.json)")->required();
-  cmd->add_option("--threads", config->threads, "Thread counts, comma-separated")
-      ->delimiter(',')
-      ->check(wholeNumber(1));
+  addThreadCountsOption(cmd, config->threads, 1);
   cmd->add_option("--integrator", config->integrators, "Integrators, comma-separated")
       ->required()
       ->delimiter(',');
@@ -167,8 +164,7 @@ void addStrategies(CLI::App& study, const ProcessGroup& group) {
                   "Image width in pixels, the scene's aspect ratio kept")
       ->default_str("the reference's, else the scene's")
       ->check(wholeNumber(1));
-  cmd->add_option("--threads", config->threads, "Worker threads; 0: all cores")
-      ->check(wholeNumber(0));
+  addThreadsOption(cmd, config->threads, MpiUse::OneProcess);
   cmd->add_option("--reference", *reference,
                   "Reference EXR of the full image, for the share of longer paths (optional)");
   cmd->add_option("-o,--output", *output,

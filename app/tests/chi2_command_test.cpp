@@ -109,6 +109,20 @@ TEST(Chi2Command, APassStatesWhatItCouldHaveCaught) {
       << r.stdoutText;
 }
 
+// --threads, as the rendering commands have it (cli/threads_option.h): one thread runs the
+// check to its verdict, and a negative count is refused by name.
+TEST(Chi2Command, ThreadsAreTheRenderCommandsOption) {
+  const Printed one =
+      printed({"--material", R"({"type":"lambertian"})", "--samples", "200000", "--threads", "1"});
+  EXPECT_EQ(one.status, 0) << one.stderrText;
+  EXPECT_NE(one.stdoutText.find("PASSED in"), std::string::npos) << one.stdoutText;
+  const Printed negative = printed({"--material", R"({"type":"lambertian"})", "--threads", "-1"});
+  EXPECT_EQ(negative.status, 2) << negative.stderrText;
+  EXPECT_NE(negative.stderrText.find("--threads: must be a whole number of at least 0, not -1"),
+            std::string::npos)
+      << negative.stderrText;
+}
+
 // --detect chooses the sample count; a target beyond --max-samples is INCONCLUSIVE (status 3).
 TEST(Chi2Command, DetectChoosesTheSamplesAndABudgetTooSmallIsInconclusive) {
   const std::vector<std::string> lambertian = {"--material", R"({"type":"lambertian"})", "--detect",

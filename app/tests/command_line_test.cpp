@@ -249,7 +249,8 @@ TEST_F(CommandLine, HelpShowsDefaults) {
     EXPECT_NE(render.find(text), std::string::npos) << text << "\n" << render;
   const auto [chi2, chi2Status] = stdoutOf("chi2 --help");
   EXPECT_EQ(chi2Status, 0);
-  for (const char* text : {"--samples INT=1000000", "500000", "PREFIX"})
+  for (const char* text :
+       {"--samples INT=1000000", "500000", "PREFIX", "--threads", "0: all cores"})
     EXPECT_NE(chi2.find(text), std::string::npos) << text << "\n" << chi2;
   const auto [study, studyStatus] = stdoutOf("study speedup --help");
   EXPECT_EQ(studyStatus, 0);

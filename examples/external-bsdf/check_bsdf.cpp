@@ -3,6 +3,7 @@
 // fails or a broken one passes.
 #include <verity/chi2/bsdf_adapter.h>
 #include <verity/chi2/significance.h>
+#include <verity/chi2/stochastic_check.h>
 #include <verity/chi2/warp_adapter.h>
 
 #include <cmath>
@@ -31,10 +32,11 @@ Vec3 incidence(double degrees) {
 }
 
 int main() {
-  // The checks that must pass: three incidences and the disk, two statistical tests each,
-  // at a family-wise level of 1%.
+  // The checks that must pass: three incidences and the disk, two statistical tests each, and
+  // the stochastic check below, at a family-wise level of 1%.
   const int correctChecks = 4;
-  const double level = chi2::sidakLevel(0.01, chi2::kStatisticalTestsPerCheck * correctChecks);
+  const double level = chi2::sidakLevel(0.01, chi2::kStatisticalTestsPerCheck * correctChecks +
+                                                  chi2::kStatisticalTestsPerStochasticCheck);
   int mistakes = 0;
   auto expect = [&](const chi2::CheckResult& r, bool shouldPass) {
     std::cout << r.report() << "\n\n";
@@ -56,6 +58,17 @@ int main() {
   w.name = "concentric disk";
   w.significance = level;
   expect(chi2::checkWarp(chi2::diskWarp<Vec2>(example::concentricDisk, example::diskPdf), w), true);
+  // The mode for a BSDF whose eval and weight are random estimates (a layered BSDF), which a
+  // deterministic one passes too; its Welch tests and Holm's procedure are Verity::stats'.
+  chi2::StochasticCheckOptions s;
+  s.name = "ggx alpha 0.3, 45 degrees, stochastic mode";
+  s.significance = level;
+  const chi2::StochasticCheck stochastic = chi2::checkStochasticBsdf(model(ggx), incidence(45), s);
+  std::cout << stochastic.report() << "\n\n";
+  if (!stochastic.passed()) {
+    std::cout << "UNEXPECTED: a correct one failed\n\n";
+    ++mistakes;
+  }
 
   // The broken variants, at the same level: a pdf without the reflection's Jacobian, and a
   // disk with a linear radius.

@@ -4,12 +4,6 @@
 
 namespace verity {
 
-namespace {
-int arenaThreads(int threads) {
-  return threads > 0 ? threads : tbb::task_arena::automatic;
-}
-}  // namespace
-
 PassRenderer::PassRenderer(const Scene& scene, const Integrator& integrator,
                            const Sampler& prototype, const Vector2i& resolution,
                            int samplesPerPixel, int threads)
@@ -20,19 +14,12 @@ PassRenderer::PassRenderer(const Scene& scene, const Integrator& integrator,
       samplesPerPixel_(samplesPerPixel),
       passValues_(size_t(resolution.x()) * resolution.y()),
       passValid_(passValues_.size()),
-      arena_(arenaThreads(threads)) {
+      arena_(threads) {
   for (int y = 0; y < resolution.y(); y += kTileSize)
     for (int x = 0; x < resolution.x(); x += kTileSize)
       tiles_.push_back(
           {x, y, std::min(x + kTileSize, resolution.x()), std::min(y + kTileSize, resolution.y())});
   contexts_.resize(tiles_.size());
-  // TBB caps its workers at the core count unless told otherwise; an explicit thread count
-  // beyond it (oversubscription, tests of 3 threads on 2 cores) must still get its threads.
-  if (threads > 0)
-    allowThreads_.emplace(
-        tbb::global_control::max_allowed_parallelism,
-        std::max<size_t>(threads, tbb::global_control::active_value(
-                                      tbb::global_control::max_allowed_parallelism)));
 }
 
 void PassRenderer::render(int pass, Film& film, ComponentImages* components) {

@@ -4,11 +4,7 @@
 // thread count or schedule, and any process can render any pass.
 #pragma once
 
-#include <tbb/global_control.h>
-#include <tbb/task_arena.h>
-
-#include <optional>
-
+#include "core/thread_arena.h"
 #include "film/film.h"
 #include "integrators/integrator.h"
 #include "render/component_images.h"
@@ -54,8 +50,7 @@ class PassRenderer {
   // a valid variance for splatting integrators too.
   std::vector<Color3> passValues_;
   std::vector<uint8_t> passValid_;
-  std::optional<tbb::global_control> allowThreads_;
-  tbb::task_arena arena_;
+  ThreadArena arena_;
 };
 
 }  // namespace verity

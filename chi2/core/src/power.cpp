@@ -62,6 +62,7 @@ ChiSquarePower chiSquarePower(int dof, double samples, double level, double powe
 }
 
 std::string ChiSquarePower::describe() const {
+  if (!ran()) return "nothing: the chi-square test did not run";
   const double quarter = densityError(kStatedMass), sixteenth = densityError(kStatedSmallMass);
   if (quarter > 1)
     return fmt::format(

@@ -12,7 +12,7 @@ namespace verity::chi2 {
 
 uint64_t seedFromName(const std::string& name) {
   // 64-bit FNV-1a, the function the renderer's hashString (core/hash.h) computes too. This
-  // library may depend on no other Verity code, and its users' checks fix their seeds by these
+  // library may depend on no renderer code, and its users' checks fix their seeds by these
   // values, so it keeps its own five lines rather than share the renderer's.
   uint64_t h = 1469598103934665603ull;
   for (unsigned char c : name) h = (h ^ c) * 1099511628211ull;
@@ -222,7 +222,7 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
     r.expected[i] = total > 0 ? r.valid * r.probability[i] / total : 0.0;
   r.chiSquare = chiSquareTest(r.expected, r.observed, outrightThreshold(r.significance, cells));
   r.integral = checkIntegral(total, r.samples, r.valid, r.significance, options.integralTolerance);
-  if (!r.chiSquare.degenerate)
+  if (r.chiSquareRan())
     r.chiSquarePower = chiSquarePower(r.chiSquare.dof, static_cast<double>(r.valid), r.significance,
                                       options.power);
   r.integralPower =

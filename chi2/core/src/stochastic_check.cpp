@@ -2,10 +2,11 @@
 #include <fmt/ranges.h>
 #include <verity/chi2/significance.h>
 #include <verity/chi2/stochastic_check.h>
+#include <verity/stats/holm.h>
+#include <verity/stats/welch_t.h>
 
 #include <algorithm>
 #include <boost/math/distributions/normal.hpp>
-#include <boost/math/distributions/students_t.hpp>
 #include <chrono>
 #include <cmath>
 #include <numeric>
@@ -15,41 +16,33 @@ namespace verity::chi2 {
 
 namespace {
 
-// A mean's estimate: its value, the variance of the value, and Σ (a_i s_i²)² / (n_i − 1)
-// over its independent parts, for the Welch–Satterthwaite degrees of freedom.
-struct Estimate {
-  double mean = 0, variance = 0, dfDenominator = 0;
+using validation::MeanEstimate;
 
-  // The mean of n values from their sum and sum of squares.
-  static Estimate of(double sum, double sumSquares, double n) {
-    const double mean = sum / n;
-    const double v = std::max(0.0, (sumSquares - n * mean * mean) / (n - 1)) / n;
-    return {mean, v, v * v / (n - 1)};
-  }
-  Estimate& operator+=(const Estimate& o) {
-    mean += o.mean, variance += o.variance, dfDenominator += o.dfDenominator;
-    return *this;
-  }
-};
+// The mean of n values from their sum and sum of squares.
+MeanEstimate meanOf(double sum, double sumSquares, double n) {
+  const double mean = sum / n;
+  return validation::sampleMean(mean, std::max(0.0, (sumSquares - n * mean * mean) / (n - 1)), n);
+}
 
-// Welch 1947: t = (X̄ − Ȳ)/√(V_X + V_Y), ν = (V_X + V_Y)² / (Σ V_i²/(n_i − 1)).
-WelchComparison welch(const Estimate& sampled, const Estimate& evaluated) {
-  WelchComparison w;
-  w.sampled = sampled.mean;
-  w.sampledError = std::sqrt(sampled.variance);
-  w.evaluated = evaluated.mean;
-  w.evaluatedError = std::sqrt(evaluated.variance);
-  const double v = sampled.variance + evaluated.variance;
-  const double difference = sampled.mean - evaluated.mean;
-  if (v == 0) {  // nothing random: equal or not
-    w.p = difference == 0 ? 1 : 0;
-    return w;
-  }
-  w.t = difference / std::sqrt(v);
-  w.df = std::max(1.0, v * v / (sampled.dfDenominator + evaluated.dfDenominator));
-  w.p =
-      2 * boost::math::cdf(boost::math::complement(boost::math::students_t(w.df), std::fabs(w.t)));
-  return w;
+// The estimate of a sum of independent means: their values, variances and Satterthwaite
+// terms add.
+void add(MeanEstimate& total, const MeanEstimate& part) {
+  total.mean += part.mean;
+  total.variance += part.variance;
+  total.dfDenominator += part.dfDenominator;
+}
+
+// Welch's test of the sampled against the evaluated mean (welch_t.h): t > 0 where the
+// sampled one is larger.
+WelchComparison welch(const MeanEstimate& sampled, const MeanEstimate& evaluated) {
+  const validation::WelchResult w = validation::welchTest(evaluated, sampled);
+  return {.sampled = sampled.mean,
+          .sampledError = std::sqrt(sampled.variance),
+          .evaluated = evaluated.mean,
+          .evaluatedError = std::sqrt(evaluated.variance),
+          .t = w.t,
+          .df = w.df,
+          .p = w.p};
 }
 
 // The smallest relative error found with 90% power by a two-sided test at `level` whose
@@ -85,14 +78,30 @@ StochasticCheck checkStochasticBsdf(const BsdfModel& model, const Eigen::Vector3
                   options.name.empty() ? "stochastic bsdf" : options.name, wi.x(), wi.y(), wi.z());
   const uint64_t seed = options.seed ? *options.seed : seedFromName(r.subject);
   const Domain d = sphereDomain(options.resolution > 0 ? options.resolution : 8);
-  const int cells = d.cells(), comps = model.components;
+  // Values of any size (RGB, four wavelengths, ...); one whose size only run time tells takes
+  // that of eval at wi's mirror direction, as checkBsdf does.
+  const int comps =
+      model.components > 0
+          ? model.components
+          : static_cast<int>(model.eval(wi, Vector3d(-wi.x(), -wi.y(), wi.z())).size());
+  const int cells = d.cells();
+  const auto values = [](const Eigen::ArrayXd& v) {
+    return fmt::format("({})", fmt::join(v.data(), v.data() + v.size(), ", "));
+  };
+  // Whether v has the check's size; records the defect where not, `where()` naming the place.
+  const auto sized = [&](const Eigen::ArrayXd& v, const char* what, auto&& where) {
+    if (v.size() == comps) return true;
+    r.audit.record(Defect::Size, fmt::format("{} {} has {} component(s), the BSDF {}, at {}", what,
+                                             values(v), v.size(), comps, where()));
+    return false;
+  };
   r.significance = options.significance;
   r.samples = options.samples;
   r.cells = cells;
   r.components = comps;
 
   // Sampling: weight·1[cell] summed per cell and component.
-  std::vector<Eigen::Array3d> sum(cells, Eigen::Array3d::Zero()), sumSquares = sum;
+  std::vector<Eigen::ArrayXd> sum(cells, Eigen::ArrayXd::Zero(comps)), sumSquares = sum;
   pcg32 rng(seed, 0);
   std::vector<long long> hits(cells, 0);
   for (long long k = 0; k < options.samples; ++k) {
@@ -111,9 +120,9 @@ StochasticCheck checkStochasticBsdf(const BsdfModel& model, const Eigen::Vector3
                          fmt::join(wi.data(), wi.data() + 3, ", "), u.lobe, u.xy.x, u.xy.y,
                          fmt::join(s->wo.data(), s->wo.data() + 3, ", "));
     };
+    if (!sized(s->weight, "weight", at)) continue;
     if (!s->wo.allFinite() || !s->weight.allFinite()) {
-      r.audit.record(Defect::NonFinite, fmt::format("weight ({}, {}, {}) at {}", s->weight[0],
-                                                    s->weight[1], s->weight[2], at()));
+      r.audit.record(Defect::NonFinite, fmt::format("weight {} at {}", values(s->weight), at()));
       continue;
     }
     if (std::fabs(s->wo.norm() - 1) > 1e-3) {
@@ -136,24 +145,26 @@ StochasticCheck checkStochasticBsdf(const BsdfModel& model, const Eigen::Vector3
   const int m = options.strata;
   const double strata = double(m) * m, pairs = strata / 2;
   const double area = d.cellWidth() * d.cellHeight();  // dω = dφ d(cos θ)
-  std::vector<std::array<Estimate, 3>> evaluated(cells);
+  std::vector<std::vector<MeanEstimate>> evaluated(cells, std::vector<MeanEstimate>(comps));
   for (int c = 0; c < cells; ++c) {
-    auto at = [&](int i, int j) {
+    auto at = [&](int i, int j) -> Eigen::ArrayXd {
       const double phi = (c % d.nx + (i + uniform01(jitter)) / m) * d.cellWidth();
       const double z = d.y0 + (c / d.nx + (j + uniform01(jitter)) / m) * d.cellHeight();
       const Vector3d wo = sphereDirection(phi, z);
-      const Eigen::Array3d y = model.eval(wi, wo) * std::fabs(wo.z());
+      const Eigen::ArrayXd y = model.eval(wi, wo) * std::fabs(wo.z());
+      const auto where = [&] {
+        return fmt::format("wi=({:.7g}) wo=({:.7g})", fmt::join(wi.data(), wi.data() + 3, ", "),
+                           fmt::join(wo.data(), wo.data() + 3, ", "));
+      };
+      if (!sized(y, "eval", where)) return Eigen::ArrayXd::Zero(comps);
       if (y.allFinite()) return y;
-      r.audit.record(Defect::NonFinite,
-                     fmt::format("eval ({}, {}, {}) at wi=({:.7g}) wo=({:.7g})", y[0], y[1], y[2],
-                                 fmt::join(wi.data(), wi.data() + 3, ", "),
-                                 fmt::join(wo.data(), wo.data() + 3, ", ")));
-      return Eigen::Array3d(Eigen::Array3d::Zero());
+      r.audit.record(Defect::NonFinite, fmt::format("eval {} at {}", values(y), where()));
+      return Eigen::ArrayXd::Zero(comps);
     };
-    Eigen::Array3d ySum = Eigen::Array3d::Zero(), pairSquares = Eigen::Array3d::Zero();
+    Eigen::ArrayXd ySum = Eigen::ArrayXd::Zero(comps), pairSquares = ySum;
     for (int j = 0; j < m; ++j)
       for (int i = 0; i < m; i += 2) {
-        const Eigen::Array3d a = at(i, j), b = at(i + 1, j);
+        const Eigen::ArrayXd a = at(i, j), b = at(i + 1, j);
         ySum += a + b;
         pairSquares += (a - b).square();
       }
@@ -175,7 +186,7 @@ StochasticCheck checkStochasticBsdf(const BsdfModel& model, const Eigen::Vector3
     for (int k = 0; k < comps; ++k) {
       StochasticCellTest t;
       static_cast<WelchComparison&>(t) =
-          welch(Estimate::of(sum[c][k], sumSquares[c][k], n), evaluated[c][k]);
+          welch(meanOf(sum[c][k], sumSquares[c][k], n), evaluated[c][k]);
       t.cell = c, t.component = k, t.hits = hits[c];
       r.cellTests.push_back(t);
     }
@@ -185,22 +196,22 @@ StochasticCheck checkStochasticBsdf(const BsdfModel& model, const Eigen::Vector3
   for (int c : pooled) poolHits += hits[c];
   for (int k = 0; k < comps; ++k) {
     double s = 0, s2 = 0, ts = 0, ts2 = 0;
-    Estimate pool, all;
+    MeanEstimate pool, all;
     for (int c = 0; c < cells; ++c) {
       ts += sum[c][k], ts2 += sumSquares[c][k];
-      all += evaluated[c][k];
+      add(all, evaluated[c][k]);
     }
     for (int c : pooled) {
       s += sum[c][k], s2 += sumSquares[c][k];
-      pool += evaluated[c][k];
+      add(pool, evaluated[c][k]);
     }
     if (!pooled.empty() && poolHits >= kStochasticMinHits) {
       StochasticCellTest t;
-      static_cast<WelchComparison&>(t) = welch(Estimate::of(s, s2, n), pool);
+      static_cast<WelchComparison&>(t) = welch(meanOf(s, s2, n), pool);
       t.component = k, t.hits = poolHits;
       r.cellTests.push_back(t);
     }
-    r.total.push_back(welch(Estimate::of(ts, ts2, n), all));
+    r.total.push_back(welch(meanOf(ts, ts2, n), all));
   }
 
   // The total albedo: its components at the Šidák level for their number.
@@ -212,16 +223,13 @@ StochasticCheck checkStochasticBsdf(const BsdfModel& model, const Eigen::Vector3
         detectable(componentLevel, std::hypot(w.sampledError, w.evaluatedError), w.evaluated));
   }
 
-  // Holm 1979: reject the smallest p-values while p_(i) ≤ α/(m − i).
-  std::vector<StochasticCellTest*> order;
-  for (StochasticCellTest& t : r.cellTests) order.push_back(&t);
-  std::sort(order.begin(), order.end(), [](auto* a, auto* b) { return a->p < b->p; });
-  const double tests = static_cast<double>(order.size());
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    if (order[i]->p > options.significance / (tests - i)) break;
-    order[i]->rejected = true;
-    ++r.rejections;
-  }
+  // The cells by Holm's step-down procedure (holm.h).
+  std::vector<double> p;
+  for (const StochasticCellTest& t : r.cellTests) p.push_back(t.p);
+  const validation::HolmResult holm = validation::holmBonferroni(p, options.significance);
+  for (std::size_t i = 0; i < p.size(); ++i) r.cellTests[i].rejected = holm.rejected[i];
+  r.rejections = holm.rejections;
+  const double tests = static_cast<double>(p.size());
   r.detectableCell = INFINITY;
   for (const StochasticCellTest& t : r.cellTests)
     r.detectableCell = std::min(

@@ -11,11 +11,13 @@
 // refraction's albedo by 0.53, some 500 standard errors at 10⁵ samples.
 #include <gtest/gtest.h>
 #include <verity/chi2/bsdf_adapter.h>
+#include <verity/chi2/power.h>
 #include <verity/chi2/significance.h>
 
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <string>
 
 #include "phong_toy.h"
 
@@ -183,6 +185,19 @@ TEST(DeltaLobes, SmoothMirrorPasses) {
   EXPECT_EQ(r.test.valid, 0);
   EXPECT_EQ(r.delta.lobes[int(DeltaLobe::Reflection)].count, kSamples);
   EXPECT_NEAR(r.delta.lobes[int(DeltaLobe::Reflection)].albedo[1], 0.8, 1e-7);
+}
+
+// Every sample a delta lobe: the histogram's chi-square test did not run, so the check states
+// no power for it (it once read "a 0% density error ... would have been found with 0%
+// probability"), while the delta lobes' own checks pass it.
+TEST(DeltaLobes, AllDeltaSamplesStateNoChiSquarePower) {
+  const CheckResult r = checkBsdf(Mirror{}.model(), incidence(30), options("mirror"));
+  ASSERT_FALSE(r.test.chiSquareRan()) << r.report();
+  const std::string power = r.test.chiSquarePower.describe();
+  EXPECT_NE(power.find("did not run"), std::string::npos) << power;
+  EXPECT_EQ(power.find('%'), std::string::npos) << power;
+  EXPECT_EQ(r.report().find("0% density error"), std::string::npos) << r.report();
+  EXPECT_TRUE(std::isinf(r.test.chiSquarePower.densityError(kStatedMass))) << power;
 }
 
 // A spectral mirror: four wavelengths, each with its own reflectance, held to a stated albedo

@@ -48,6 +48,16 @@ TEST(Power, TooFewSamplesClaimNothing) {
   EXPECT_NE(p.describe().find("no density error"), std::string::npos) << p.describe();
 }
 
+// A test that did not run (the default) caught nothing, and says so: it once stated "a 0%
+// density error ... would have been found with 0% probability".
+TEST(Power, ATestThatDidNotRunClaimsNothing) {
+  const ChiSquarePower p;
+  EXPECT_FALSE(p.ran());
+  EXPECT_EQ(p.describe(), "nothing: the chi-square test did not run");
+  EXPECT_TRUE(std::isinf(p.densityError(kStatedMass)));
+  EXPECT_TRUE(chiSquarePower(63, 1e6, 0.01, 0.9).ran());
+}
+
 TEST(Power, IntegralPowerMatchesTheNormalApproximation) {
   // Half the samples valid, 10⁶ of them: the check fails a claim I when the valid fraction
   // falls (z_{1−α/2} + z_power)·σ below I − tol, σ = √(q(1 − q)/N) ≈ 5·10⁻⁴.

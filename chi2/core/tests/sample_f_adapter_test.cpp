@@ -4,7 +4,9 @@
 // toy below is not: its sampling density depends on the sampled direction only (cos³), and its
 // f on both directions differently (an albedo set by wo times cos² of wi). So glue that swaps
 // wo and wi fails the chi-square test and the sample-pdf and weight checks, and glue that drops
-// the cosine, or takes that of the given direction, fails the weight check.
+// the cosine, or takes that of the given direction, fails the weight check. The glue that
+// docs/checks.md gives for pbrt-v4's BxDFs compiles against their signatures (a stand-in) and
+// passes.
 //
 // Level: kCorrectChecks checks of two statistical tests each must pass, at a family-wise level
 // of 1% with Šidák's correction; the backwards glues use the same level.
@@ -16,6 +18,12 @@
 #include <numbers>
 
 #include "lambert_toy.h"
+#include "pbrt_v4_stand_in.h"
+
+// As docs/checks.md tells a pbrt-v4 user to declare it.
+template <>
+struct verity::chi2::ValueSize<pbrt_v4::SampledSpectrum>
+    : std::integral_constant<int, pbrt_v4::NSpectrumSamples> {};
 
 namespace verity::chi2::sample_f_adapter_test {
 
@@ -23,8 +31,9 @@ namespace {
 
 using lambert_toy::Vec3;
 
-// The toy with reciprocity off and on, the Lambertian lobe by the adapter and by swapped glue.
-constexpr int kCorrectChecks = 4;
+// The toy with reciprocity off and on, the Lambertian lobe by the adapter and by swapped glue,
+// pbrt-v4's DiffuseBxDF by the documented glue.
+constexpr int kCorrectChecks = 5;
 const double kLevel = sidakLevel(0.01, kStatisticalTestsPerCheck* kCorrectChecks);
 constexpr long long kSamples = 200'000;
 
@@ -99,12 +108,17 @@ BsdfModel byHand(Glue glue) {
       });
 }
 
-// At 40° from the normal, towards +x, where the toy's albedo is 0.76.
-CheckResult check(const BsdfModel& m, const std::string& name, bool reciprocity = false) {
+BsdfCheckOptions options(const std::string& name) {
   BsdfCheckOptions o;
   o.name = "sample_f " + name;
   o.significance = kLevel;
   o.samples = kSamples;
+  return o;
+}
+
+// At 40° from the normal, towards +x, where the toy's albedo is 0.76.
+CheckResult check(const BsdfModel& m, const std::string& name, bool reciprocity = false) {
+  BsdfCheckOptions o = options(name);
   // The toy is not reciprocal on purpose; its reciprocity is the test's own subject.
   o.checkReciprocity = reciprocity;
   const double t = 40 * std::numbers::pi / 180;
@@ -152,6 +166,31 @@ TEST(SampleFAdapter, ASymmetricLobeCannotTellTheMappingsApart) {
   EXPECT_TRUE(right.passed()) << failed(right);
   const CheckResult swapped = check(byHand<UniformLambert>(Glue::Swapped), "lambert swapped", true);
   EXPECT_TRUE(swapped.passed()) << failed(swapped);
+}
+
+// docs/checks.md's glue for pbrt-v4, as written there, on the stand-in's DiffuseBxDF (float,
+// four wavelengths): it compiles where the sample flags are a parameter and a Point2f of
+// doubles would narrow (the glue once wrote {u.xy.x, u.xy.y}), and the BxDF passes.
+TEST(SampleFAdapter, TheGlueForPbrtV4CompilesAndPasses) {
+  using namespace pbrt_v4;
+  const DiffuseBxDF bxdf(SampledSpectrum(0.9f, 0.7f, 0.5f, 0.3f));
+  // From docs/checks.md:
+  const TransportMode mode = TransportMode::Radiance;
+  const BxDFReflTransFlags flags = BxDFReflTransFlags::All;
+  chi2::BsdfModel model = chi2::bsdfModelFromSampleF<Vector3f>(
+      [&](const Vector3f& wo,
+          const chi2::BsdfUniforms& u) -> std::optional<chi2::SampledF<Vector3f, SampledSpectrum>> {
+        const pstd::optional<BSDFSample> s =
+            bxdf.Sample_f(wo, Float(u.lobe), Point2f(Float(u.xy.x), Float(u.xy.y)), mode, flags);
+        if (!s) return std::nullopt;
+        return chi2::SampledF<Vector3f, SampledSpectrum>{s->wi, s->f, s->pdf, s->IsSpecular()};
+      },
+      [&](const Vector3f& wo, const Vector3f& wi) { return bxdf.f(wo, wi, mode); },
+      [&](const Vector3f& wo, const Vector3f& wi) { return bxdf.PDF(wo, wi, mode, flags); });
+  // (end of the documented glue)
+  EXPECT_EQ(model.components, NSpectrumSamples);
+  const CheckResult r = checkBsdf(model, Vector3f(0.5f, 0, 0.866f), options("pbrt-v4 diffuse"));
+  EXPECT_EQ(r.verdict(), Verdict::Passed) << failed(r);
 }
 
 }  // namespace verity::chi2::sample_f_adapter_test

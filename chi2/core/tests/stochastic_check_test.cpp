@@ -1,8 +1,9 @@
 // The stochastic mode on toys in their own types: a "layered" Lambertian whose eval and sample
-// weight are unbiased random estimates passes, and fails when either estimate is 2% low; a
+// weight are unbiased random estimates passes, and fails when either estimate is 2% low; its
+// four-component twin passes, and fails when its fourth component alone is 2% low; a
 // deterministic Phong lobe checked without its pdf passes, and fails with its weight wrong.
 //
-// Level: the correct subjects are 2 checks of kStatisticalTestsPerStochasticCheck tests, at a
+// Level: the correct subjects are 3 checks of kStatisticalTestsPerStochasticCheck tests, at a
 // family-wise level of 1% with Šidák's correction (per test about 0.0025; per component of
 // the total albedo about 0.00084, z = 3.34). Power: with 400,000 draws and 128 cells of 32 × 32
 // evaluations the layered toy's total albedo has a standard error of about 0.14% of it (the
@@ -15,6 +16,7 @@
 #include <verity/chi2/significance.h>
 #include <verity/chi2/stochastic_check.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -25,35 +27,65 @@
 
 namespace verity::chi2::stochastic_check_test {
 
+// A spectrum as pbrt-v4's SampledSpectrum is seen by the adapter: four floats read through
+// [i], their number given by a ValueSize specialisation.
+struct Spectrum4 {
+  std::array<float, 4> values{};
+  float operator[](int i) const { return values[i]; }
+};
+
+}  // namespace verity::chi2::stochastic_check_test
+
+template <>
+struct verity::chi2::ValueSize<verity::chi2::stochastic_check_test::Spectrum4>
+    : std::integral_constant<int, 4> {};
+
+namespace verity::chi2::stochastic_check_test {
+
 namespace {
 
 using phong_toy::Rgb;
 using phong_toy::Vec3;
 
-enum class Flaw { None, EvalLow, WeightLow, WeightSkewed };
+enum class Flaw { None, EvalLow, WeightLow, WeightSkewed, FourthEvalLow };
 
-// A Lambertian of albedo (0.8, 0.6, 0.4) whose eval and sample weight are each multiplied by a
-// random factor uniform in [0.5, 1.5) (mean 1) from its own generator, as a layered BSDF's
-// random walk would return them; a Flaw scales one of them by 0.98, or the weight by 1.1 where
-// wo.y > 0 and 0.9 where wo.y < 0 (the same total albedo for wi in the xz plane).
+// The toy's albedo times f: (0.8, 0.6, 0.4) in RGB, (0.8, 0.6, 0.4, 0.7·fourth) in four
+// components.
+template <class Value>
+Value tinted(double f, double fourth);
+template <>
+Rgb tinted<Rgb>(double f, double) {
+  return {float(0.8 * f), float(0.6 * f), float(0.4 * f)};
+}
+template <>
+Spectrum4 tinted<Spectrum4>(double f, double fourth) {
+  return {{float(0.8 * f), float(0.6 * f), float(0.4 * f), float(0.7 * f * fourth)}};
+}
+
+// A Lambertian whose eval and sample weight are each multiplied by a random factor uniform in
+// [0.5, 1.5) (mean 1) from its own generator, as a layered BSDF's random walk would return
+// them; a Flaw scales one of them by 0.98 (FourthEvalLow: eval's fourth component alone), or
+// the weight by 1.1 where wo.y > 0 and 0.9 where wo.y < 0 (the same total albedo for wi in the
+// xz plane).
+template <class Value>
 class LayeredToy {
  public:
   LayeredToy(Flaw flaw, uint64_t seed)
       : flaw_(flaw), rng_(std::make_shared<std::mt19937_64>(seed)) {}
 
-  Rgb eval(const Vec3& wi, const Vec3& wo) const {
+  Value eval(const Vec3& wi, const Vec3& wo) const {
     if (wi.z <= 0 || wo.z <= 0) return {};
     const double f = factor() / std::numbers::pi * (flaw_ == Flaw::EvalLow ? 0.98 : 1);
-    return {float(0.8 * f), float(0.6 * f), float(0.4 * f)};
+    return tinted<Value>(f, flaw_ == Flaw::FourthEvalLow ? 0.98 : 1);
   }
-  std::optional<phong_toy::Sample> sample(const Vec3& wi, double u0, double u1) const {
+  std::optional<SampledDirection<Vec3, Value>> sample(const Vec3& wi, double u0, double u1) const {
     if (wi.z <= 0) return std::nullopt;
     const double r = std::sqrt(u0), phi = 2 * std::numbers::pi * u1;
     const Vec3 wo{r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1 - u0))};
     if (wo.z <= 0) return std::nullopt;
     double w = factor() * (flaw_ == Flaw::WeightLow ? 0.98 : 1);
     if (flaw_ == Flaw::WeightSkewed) w *= wo.y > 0 ? 1.1 : 0.9;
-    return phong_toy::Sample{wo, {float(0.8 * w), float(0.6 * w), float(0.4 * w)}, 0};
+    return SampledDirection<Vec3, Value>{wo, tinted<Value>(w, 1), 0};
   }
 
  private:
@@ -63,8 +95,9 @@ class LayeredToy {
   std::shared_ptr<std::mt19937_64> rng_;  // one generator for the model's copies
 };
 
+template <class Value = Rgb>
 BsdfModel layeredModel(Flaw flaw, const std::string& name) {
-  const LayeredToy toy(flaw, seedFromName(name + " toy"));
+  const LayeredToy<Value> toy(flaw, seedFromName(name + " toy"));
   // No pdf: the mode does not use one.
   return bsdfModel<Vec3>(
       [toy](const Vec3& wi, const BsdfUniforms& u) { return toy.sample(wi, u.xy.x, u.xy.y); },
@@ -72,7 +105,7 @@ BsdfModel layeredModel(Flaw flaw, const std::string& name) {
       [](const Vec3&, const Vec3&) { return 0.0; });
 }
 
-constexpr int kCorrectChecks = 2;
+constexpr int kCorrectChecks = 3;
 const double kLevel = sidakLevel(0.01, kStatisticalTestsPerStochasticCheck* kCorrectChecks);
 
 StochasticCheckOptions options(const std::string& name) {
@@ -85,9 +118,10 @@ StochasticCheckOptions options(const std::string& name) {
 
 const Vec3 kWi{0.5, 0, 0.8660254037844386};
 
+template <class Value = Rgb>
 StochasticCheck checkLayered(Flaw flaw, const std::string& name) {
   const StochasticCheckOptions o = options(name);
-  return checkStochasticBsdf(layeredModel(flaw, o.name), kWi, o);
+  return checkStochasticBsdf(layeredModel<Value>(flaw, o.name), kWi, o);
 }
 
 }  // namespace
@@ -119,6 +153,39 @@ TEST(StochasticBsdf, LocalErrorIsFoundByTheCells) {
   EXPECT_EQ(r.verdict(), Verdict::Failed) << r.report();
   EXPECT_TRUE(r.failed("cells")) << r.report();
   EXPECT_FALSE(r.failed("total albedo")) << r.report();
+}
+
+// Four components, as pbrt-v4's SampledSpectrum has: the check once summed every value into
+// three-component arrays, writing past them, and tested three components at most.
+TEST(StochasticBsdf, FourComponentLayeredToyPasses) {
+  const StochasticCheck r = checkLayered<Spectrum4>(Flaw::None, "layered spectral");
+  EXPECT_EQ(r.verdict(), Verdict::Passed) << r.report();
+  EXPECT_EQ(r.components, 4);
+  EXPECT_EQ(r.total.size(), 4u) << r.report();
+  EXPECT_GT(r.cellTests.size(), 60u * 4) << r.report();
+}
+
+// Its fourth component alone 2% low in eval (some 14 standard errors, as above): only that
+// component's total albedo can find it.
+TEST(StochasticBsdf, FourthComponentTwoPercentLowIsRejected) {
+  const StochasticCheck r =
+      checkLayered<Spectrum4>(Flaw::FourthEvalLow, "layered spectral fourth eval 2% low");
+  EXPECT_EQ(r.verdict(), Verdict::Failed) << r.report();
+  EXPECT_TRUE(r.failed("total albedo")) << r.report();
+  ASSERT_EQ(r.total.size(), 4u) << r.report();
+  EXPECT_LT(r.total[3].p, sidakLevel(kLevel, 4)) << r.report();
+}
+
+// A value whose size differs from the model's is a defect, not a read or a write past the
+// check's sums.
+TEST(StochasticBsdf, AValueOfAnotherSizeIsADefect) {
+  StochasticCheckOptions o = options("layered wrong size");
+  o.samples = 5000;
+  BsdfModel m = layeredModel<Spectrum4>(Flaw::None, o.name);
+  m.components = 3;
+  const StochasticCheck r = checkStochasticBsdf(m, kWi, o);
+  EXPECT_EQ(r.verdict(), Verdict::Failed) << r.report();
+  EXPECT_TRUE(r.failed(defectName(Defect::Size))) << r.report();
 }
 
 // A deterministic BSDF without a pdf: the Phong lobe, whose sample weight is right or forgets

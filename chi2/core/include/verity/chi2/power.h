@@ -14,6 +14,7 @@
 // interval's acceptance region in that count is exact, so its power is computed exactly.
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -35,15 +36,23 @@ double chiSquareNoncentrality(int dof, double level, double power);
 double densityErrorForEffect(double effectSize, double mass);
 double effectForDensityError(double densityError, double mass);
 
-// What a chi-square test of N samples over `dof` degrees of freedom could have caught.
+// What a chi-square test of N samples over `dof` degrees of freedom could have caught. As
+// default-constructed (dof 0) it is that of a test that did not run (every sample a delta
+// lobe, too few cells, an untrustworthy quadrature): it states that it caught nothing.
 struct ChiSquarePower {
   int dof = 0;
   double samples = 0;  // the valid samples histogrammed
   double level = 0, power = 0;
   double effectSize = 0;  // Cohen's w found with probability `power`
-  double densityError(double mass) const { return densityErrorForEffect(effectSize, mass); }
+  bool ran() const { return dof > 0; }
+  // +∞ for a test that did not run: no error would have been found.
+  double densityError(double mass) const {
+    return ran() ? densityErrorForEffect(effectSize, mass)
+                 : std::numeric_limits<double>::infinity();
+  }
   // "a 1.3% density error over cells holding 1/4 of the mass (5.2% over 1/16), compensated
-  // elsewhere, would have been found with 90% probability"
+  // elsewhere, would have been found with 90% probability"; for a test that did not run,
+  // "nothing: the chi-square test did not run".
   std::string describe() const;
 };
 ChiSquarePower chiSquarePower(int dof, double samples, double level, double power);

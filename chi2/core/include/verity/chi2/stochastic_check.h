@@ -9,9 +9,9 @@
 //               directions uniform in the cell (a stream of its own), with the standard error
 //               of strata collapsed in pairs (Cochran 1977), which may overstate it: conservative.
 // Each cell's two estimates are compared by Welch's test with the Welch–Satterthwaite degrees
-// of freedom (Welch 1947, Biometrika 34; Satterthwaite 1946; p-values from Boost.Math's
-// students_t), and the cells by Holm's step-down procedure at the check's level (Holm 1979,
-// Scand. J. Statistics 6), which holds under any dependence. Cells with fewer than
+// of freedom (Welch 1947, Biometrika 34; Satterthwaite 1946; <verity/stats/welch_t.h>), and the
+// cells by Holm's step-down procedure at the check's level (Holm 1979, Scand. J. Statistics 6;
+// <verity/stats/holm.h>), which holds under any dependence. Cells with fewer than
 // kStochasticMinHits samples are pooled into one, tested when the pool has that many: the
 // Poisson skew of a cell's count, 1/√hits, then changes the normal tail at Holm's thresholds
 // by tens of percent at most. The total albedo (all cells) is a second test, its components
