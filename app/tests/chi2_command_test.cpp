@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <regex>
 
 #include "test_directory.h"
 #include "testing/child_process.h"
@@ -121,6 +122,31 @@ TEST(Chi2Command, ThreadsAreTheRenderCommandsOption) {
   EXPECT_NE(negative.stderrText.find("--threads: must be a whole number of at least 0, not -1"),
             std::string::npos)
       << negative.stderrText;
+}
+
+// The report and the figure's data are the same on 1, 2 and 3 threads but for the seconds (the
+// samples come from streams fixed per block, the cells and integrals per cell): a rough
+// dielectric on equal cells, whose refraction and reciprocity checks run on every sample.
+TEST(Chi2Command, OneTwoAndThreeThreadsGiveTheSameReportAndData) {
+  const std::filesystem::path dir = testing::freshTestDirectory("verity-chi2-");
+  auto run = [&](const std::string& threads) {
+    const std::string prefix = (dir / ("t" + threads)).string();
+    const Printed r =
+        printed({"--material", R"({"type":"rough_dielectric","alpha":0.3})", "--incoming", "45",
+                 "--samples", "300000", "--threads", threads, "-o", prefix});
+    EXPECT_EQ(r.status, 0) << r.stderrText;
+    std::ifstream in(prefix + ".json");
+    const std::string data((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_NE(data.find(R"("phases")"), std::string::npos);
+    const std::string report =
+        std::regex_replace(r.stdoutText, std::regex(R"(in [0-9.]+ s|wrote .*\n)"), "");
+    return report +
+           std::regex_replace(data, std::regex(R"("phases":\{[^}]*\},?|"seconds":[^,}]*,?)"), "");
+  };
+  const std::string one = run("1");
+  EXPECT_NE(one.find("PASSED"), std::string::npos) << one.substr(0, 2000);
+  for (const std::string threads : {"2", "3"})
+    EXPECT_EQ(run(threads), one) << threads << " threads";
 }
 
 // --detect chooses the sample count; a target beyond --max-samples is INCONCLUSIVE (status 3).
