@@ -12,7 +12,6 @@
 
 #include "chi2/suite/figure.h"
 #include "chi2/suite/suite.h"
-#include "cli/check_progress_display.h"
 #include "cli/exit_status.h"
 #include "cli/number_options.h"
 #include "cli/output_paths.h"
@@ -20,6 +19,7 @@
 #include "cli/subcommand.h"
 #include "cli/threads_option.h"
 #include "cli/verdict_command.h"
+#include "commands/check_progress_display.h"
 #include "core/thread_arena.h"
 
 namespace verity {

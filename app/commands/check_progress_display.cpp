@@ -1,4 +1,4 @@
-#include "cli/check_progress_display.h"
+#include "commands/check_progress_display.h"
 
 #include <fmt/format.h>
 
