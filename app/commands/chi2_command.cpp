@@ -17,6 +17,7 @@
 #include "cli/seed_option.h"
 #include "cli/subcommand.h"
 #include "cli/verdict_command.h"
+#include "core/error.h"
 
 namespace verity {
 
