@@ -20,7 +20,6 @@
 #include "cli/threads_option.h"
 #include "cli/verdict_command.h"
 #include "commands/check_progress_display.h"
-#include "core/error.h"
 #include "core/thread_arena.h"
 
 namespace verity {
