@@ -20,6 +20,7 @@
 #include "cli/threads_option.h"
 #include "cli/verdict_command.h"
 #include "commands/check_progress_display.h"
+#include "core/error.h"
 #include "core/thread_arena.h"
 
 namespace verity {
@@ -178,7 +179,7 @@ int seedTable(const Chi2Args& a) {
   std::cout << fmt::format("{:<18} {:>9} {:>7} | {:<8} {:>9} {:>9} {:>9} {:>10}\n", "test",
                            "seed int", "seed %", "sampling", "integral", "% valid", "int check",
                            "chi2 p");
-  int failures = 0;
+  std::vector<std::string> notPassed;  // the reports of the rows that did not pass
   for (const Row& row : rows)
     for (const char* sampling : {"normals", "visible"}) {
       chi2::BsdfSetup s;
@@ -193,7 +194,7 @@ int seedTable(const Chi2Args& a) {
       chi2::TestOptions o = testOptions(a);
       o.seed = chi2::seedFromName(std::string("seed_table_") + row.name + sampling);
       const chi2::TestResult r = chi2::runSamplingTest(subject, o);
-      failures += !r.passed();
+      if (!r.passed()) notPassed.push_back(r.report());
       std::cout << fmt::format(
           "{:<18} {:>9.6f} {:>6}% | {:<8} {:>9.6f} {:>8.3f}% {:>9} {:>10.3g}\n", row.name,
           row.seedIntegral, row.seedValid, sampling, r.integral.integral,
@@ -202,7 +203,8 @@ int seedTable(const Chi2Args& a) {
     }
   std::cout << "The seed's figures fail the integral check: with invalid samples weighted zero, "
                "the pdf must integrate to the valid fraction.\n";
-  return failures ? 1 : 0;
+  for (const std::string& report : notPassed) std::cout << "\n" << report << "\n";
+  return notPassed.empty() ? 0 : 1;
 }
 
 }  // namespace
