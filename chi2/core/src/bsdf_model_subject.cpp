@@ -82,12 +82,8 @@ void BsdfModelSubject::sampleBatch(pcg32& rng, std::vector<std::optional<Point2d
   // (the model takes only the uniforms) and lets the audit's cost be timed apart.
   const Vector3d& wi = setup_.wi;
   std::vector<BsdfUniforms> us(out.size());
-  for (BsdfUniforms& u : us) u = drawUniforms(rng);
   std::vector<std::optional<DirectionSample>> drawn(out.size());
-  if (model_.sampleBatch)
-    model_.sampleBatch(wi, us, drawn);
-  else
-    for (size_t k = 0; k < out.size(); ++k) drawn[k] = model_.sample(wi, us[k]);
+  draw(rng, us, drawn);
   const PhaseClock clock;
   if (!model_.evalBatch) {
     for (size_t k = 0; k < out.size(); ++k)
@@ -128,22 +124,26 @@ void BsdfModelSubject::sampleBatch(pcg32& rng, std::vector<std::optional<Point2d
   audit.addSeconds(clock.seconds());
 }
 
+void BsdfModelSubject::draw(pcg32& rng, std::vector<BsdfUniforms>& us,
+                            std::vector<std::optional<DirectionSample>>& drawn) const {
+  for (BsdfUniforms& u : us) u = drawUniforms(rng);
+  if (model_.sampleBatch)
+    model_.sampleBatch(setup_.wi, us, drawn);
+  else
+    for (size_t k = 0; k < us.size(); ++k) drawn[k] = model_.sample(setup_.wi, us[k]);
+}
+
 double BsdfModelSubject::drawingFloorSeconds(const Domain& cells, long long n, uint64_t seed,
                                              long long& binned) const {
   const PhaseClock clock;
   std::vector<long long> hist(cells.cells(), 0);
-  constexpr long long kChunk = 1 << 16;
   std::vector<BsdfUniforms> us;
   std::vector<std::optional<DirectionSample>> drawn;
-  for (long long c = 0; c * kChunk < n; ++c) {
+  for (long long c = 0; c * kSamplesPerStream < n; ++c) {
     pcg32 rng(seed, static_cast<uint64_t>(c));
-    us.resize(std::min(kChunk, n - c * kChunk));
+    us.resize(std::min(kSamplesPerStream, n - c * kSamplesPerStream));
     drawn.resize(us.size());
-    for (BsdfUniforms& u : us) u = drawUniforms(rng);
-    if (model_.sampleBatch)
-      model_.sampleBatch(setup_.wi, us, drawn);
-    else
-      for (size_t k = 0; k < us.size(); ++k) drawn[k] = model_.sample(setup_.wi, us[k]);
+    draw(rng, us, drawn);
     for (const std::optional<DirectionSample>& s : drawn) {
       if (!evaluable(s)) continue;
       const int cell = cells.cellOf(sphereCoords(setup_.frame.toWorld(s->wo)));

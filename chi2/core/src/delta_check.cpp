@@ -114,7 +114,7 @@ DeltaCheck checkDeltaLobes(const BsdfModel& model, const Eigen::Vector3d& wi,
   const auto accepted = acceptedDirections(wi, options.eta);
 
   // Fixed chunks, one stream each, summed in order: the same result on any number of threads.
-  constexpr long long kChunk = 1 << 16;
+  constexpr long long kChunk = kSamplesPerStream;
   const long long chunks = (samples + kChunk - 1) / kChunk;
   std::vector<Partial> partial(chunks);
   tbb::parallel_for(0LL, chunks, [&](long long c) {

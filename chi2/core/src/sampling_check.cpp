@@ -146,7 +146,7 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   // Sampling, in fixed chunks with one PCG32 stream each: the result does not depend on
   // the number of threads or their scheduling.
   const long long deltaBefore = subject.deltaSamples();
-  constexpr long long kChunk = 1 << 16;
+  constexpr long long kChunk = kSamplesPerStream;
   const long long chunks = (r.samples + kChunk - 1) / kChunk;
   std::vector<std::vector<long long>> partial(chunks);
   std::vector<long long> validPerChunk(chunks, 0), outsidePerChunk(chunks, 0);

@@ -66,6 +66,10 @@ class BsdfModelSubject : public Subject {
 
  private:
   struct PointByPoint;
+  // us.size() uniforms from rng and the model's samples for them (drawn, of the same size),
+  // through its batched form where it has one: what sampleBatch and the floor draw alike.
+  void draw(pcg32& rng, std::vector<BsdfUniforms>& us,
+            std::vector<std::optional<DirectionSample>>& drawn) const;
   // The per-sample checks of the sample s drawn with u; eval(wi, wo), pdf(wi, wo) and
   // eval(wo, wi) come from `values` (point by point, or a batch's), asked for only for a
   // sample that needs them (evaluable).

@@ -12,6 +12,10 @@
 
 namespace verity::chi2 {
 
+// The samples drawn from one random stream (one PCG32 sequence, numbered from 0): a check's
+// samples are drawn block by block, so that they do not depend on the number of threads.
+inline constexpr long long kSamplesPerStream = 1 << 16;
+
 class Subject {
  public:
   virtual ~Subject() = default;
