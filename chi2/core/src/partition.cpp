@@ -27,124 +27,124 @@ CellLayout parseCellLayout(const std::string& name, const std::string& option) {
 
 namespace {
 
-// A piece [a, b] of a range and the mass the density holds over it.
+// A piece [a, b] of a range, the mass the density holds over it, and whether the density is
+// zero all over it (at every node of the rules that tabulated it).
 struct Piece {
   double a = 0, b = 0, mass = 0;
+  bool zero = false;
 };
 
-// A piece holding more than 1/(kSplit·n) of the mass to be cut into n is bisected: an edge
-// placed by linear interpolation inside a piece then errs by at most that much, and by far
-// less where the density is smooth across the piece (second order in its width).
+// The distribution is resolved into steps of about 1/(kSplit·n) of the mass to be cut into
+// n: an edge placed by linear interpolation inside a step then errs by at most that much, and
+// by far less where the density is smooth across it (second order in its width).
 constexpr double kSplit = 4;
-// Pieces narrower than this fraction of the range are not bisected: densities are evaluated
-// in single precision, whose steps (~10⁻⁷ relative) are coarser.
-constexpr double kMinWidth = 1e-9;
 
-// The masses of the inversion's pieces need only be good to a few per cent: one bisection at
-// most per range, and tolerances that a density evaluated in single precision can meet. A
-// piece that holds much of the mass is bisected by the inversion anyway, and the cells' own
-// probabilities are integrated afterwards to the test's tolerances (integrateGrid).
-// Measured on a Phong lobe of exponent 10⁴ (a staircase of 6·10⁻⁴ steps): 6.5 s with two
-// bisections, 1 s with none; with none a Gaussian of σ = 0.01 in pieces of 1/8 got cells of
-// 4.7 times their share (FrameworkPartition.DiskAndTriangleSupportsAreCut).
-QuadratureOptions inversionOptions(QuadratureOptions o) {
+// What the inversion integrates, by the quadrature's own nested rule and error control
+// (quadrature_tasks.h), keeping its leaves. The cells' probabilities are integrated afterwards
+// to the test's tolerances (integrateGrid), so the edges need only be good to a small part of
+// a cell's share: the inner integrals to 10⁻³ of their own value or of the mass being cut
+// (the rectangle's, `mass`), the outer to 10⁻², as the pieces of the inversion that this
+// replaces were; no second, verifying level.
+QuadratureOptions tabulationOptions(QuadratureOptions o, double mass) {
   o.relTolerance = 1e-3;
   o.outerRelTolerance = 1e-2;
-  o.maxDepth = 1;
   o.verifyDepth = 0;
-  o.cellAbsTolerance = 0;
+  o.cellAbsTolerance = std::isfinite(mass) ? 1e-3 * std::fabs(mass) : 0;
   return o;
 }
 
-// What the inversion integrates: the loose rule, or the grid's accurate one (as integrateGrid
-// integrates a cell, to a grid cell's share of the budget).
-struct Integrals {
-  const Domain& grid;
-  const DensityFeatures& features;
-  QuadratureOptions loose, accurate;
-
-  Integrals(const Domain& g, const DensityFeatures& f, const QuadratureOptions& options)
-      : grid(g), features(f), loose(inversionOptions(options)), accurate(options) {
-    accurate.cellAbsTolerance = options.gridAbsTolerance / grid.cells();
-  }
-};
-
-// The mass over [a, b], by the inversion's rule or `accurate`ly (to the test's own
-// tolerances): of the marginal in x (over the grid's height), or of the strip [xa, xb]'s
-// conditional in y.
-struct MassOf {
-  Density& density;
-  const Integrals& integral;
-  bool inY = false;
-  double xa = 0, xb = 0;
-
-  Task<double> operator()(double a, double b, bool accurate) const {
-    const Domain& g = integral.grid;
-    const CellBounds r = inY ? CellBounds{xa, xb, a, b} : CellBounds{a, b, g.y0, g.y1};
-    const CellIntegral c = co_await rectangleIntegral(
-        density, integral.features, g, r, accurate ? integral.accurate : integral.loose);
-    co_return c.value;
-  }
-};
-
-// Halves whose rule-of-thumb masses lose half their parent's have missed a lobe between the
-// rule's nodes (Phong with exponent 10⁶: a lobe 10⁻³ wide): they are integrated accurately.
-Task<std::vector<Piece>> bisect(const MassOf& mass, Piece p, double most, double minWidth) {
-  if (!(p.mass > most) || p.b - p.a <= minWidth) co_return std::vector<Piece>{p};
-  Density& d = mass.density;
-  const double m = 0.5 * (p.a + p.b);
-  std::array<double, 2> halves = co_await d.both(mass(p.a, m, false), mass(m, p.b, false));
-  Piece left{p.a, m, halves[0]}, right{m, p.b, halves[1]};
-  if (left.mass + right.mass < 0.5 * p.mass) {
-    halves = co_await d.both(mass(p.a, m, true), mass(m, p.b, true));
-    left.mass = halves[0];
-    right.mass = halves[1];
-  }
-  std::array<std::vector<Piece>, 2> parts =
-      co_await d.both(bisect(mass, left, most, minWidth), bisect(mass, right, most, minWidth));
-  parts[0].insert(parts[0].end(), parts[1].begin(), parts[1].end());
-  co_return std::move(parts[0]);
+// The steps a leaf's distribution is resolved into: a power of two, up to kLeafSteps, that
+// leaves each about 1/(kSplit·n) of `total` at most. The leaves themselves are split by the
+// tabulation until they hold at most kLeafSteps such steps (leafShare).
+int stepsFor(double value, double total, int n) {
+  int steps = 1;
+  while (steps < kLeafSteps && value > steps * total / (kSplit * n)) steps *= 2;
+  return steps;
+}
+double leafShare(int n) {
+  return kLeafSteps / (kSplit * n);
 }
 
-// [lo, hi] cut at `cuts` and into n equal pieces, each bisected until it holds at most
-// 1/(kSplit·n) of the total: the pieces in order, their masses summing to the total. In
-// parallel over the first pieces, each refined alone: the same pieces for any thread count.
-// The first pieces are integrated accurately where their rule-of-thumb masses sum to less
-// than half of `expected` (or always, without an expectation: a lobe between the rule's
-// nodes would leave no mass to follow).
-Task<std::vector<Piece>> massPieces(const MassOf& mass, double lo, double hi, int n,
-                                    std::vector<double> cuts, double expected) {
-  Density& d = mass.density;
-  for (int k = 1; k < n; ++k) cuts.push_back(lo + (hi - lo) * k / n);
-  cuts.push_back(lo);
-  cuts.push_back(hi);
-  std::erase_if(cuts, [&](double c) { return !(c >= lo && c <= hi); });
-  std::sort(cuts.begin(), cuts.end());
-  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-  const size_t count = cuts.size() - 1;
-  std::vector<Piece> first(count);
-  double total = 0;
-  for (int pass = 0; pass < 2; ++pass) {
-    const bool accurate = pass == 1;
-    if (accurate && total >= 0.5 * expected) break;
-    std::vector<Task<double>> masses;
-    masses.reserve(count);
-    for (size_t k = 0; k < count; ++k) masses.push_back(mass(cuts[k], cuts[k + 1], accurate));
-    const std::vector<double> m = co_await d.all(std::move(masses), true);
-    total = 0;
-    for (size_t k = 0; k < count; ++k) {
-      first[k] = {cuts[k], cuts[k + 1], m[k]};
-      total += m[k];
-    }
+// A piecewise linear cumulative distribution: its values cum[k] at knots at[k], increasing,
+// and zero[k] where the density is zero all over [at[k], at[k + 1]].
+struct Knots {
+  std::vector<double> at, cum;
+  std::vector<char> zero;
+
+  void add(double x, double c, bool z) {
+    at.push_back(x);
+    cum.push_back(c);
+    zero.push_back(z);
   }
-  std::vector<Task<std::vector<Piece>>> refining;
-  refining.reserve(count);
-  for (size_t k = 0; k < count; ++k)
-    refining.push_back(bisect(mass, first[k], total / (kSplit * n), kMinWidth * (hi - lo)));
-  const std::vector<std::vector<Piece>> refined = co_await d.all(std::move(refining), true);
+  // The distribution at x: 0 before the first knot, the total after the last.
+  double operator()(double x, size_t& k) const {
+    if (at.empty() || x <= at.front()) return 0;
+    if (x >= at.back()) return cum.back();
+    while (at[k + 1] < x) ++k;
+    return cum[k] + (cum[k + 1] - cum[k]) * (x - at[k]) / (at[k + 1] - at[k]);
+  }
+  // Whether the density is zero over the interval holding x. Outside the knots, beyond the
+  // support at this node (the disk's, the triangle's), nothing is known: another node of the
+  // strip, nearer its end, may find mass there, and the cell's integral will.
+  bool zeroAt(double x, size_t& k) const {
+    if (at.empty() || x <= at.front() || x >= at.back()) return false;
+    while (at[k + 1] < x) ++k;
+    return zero[k];
+  }
+};
+
+// The cumulative distribution of consecutive leaves, each resolved into steps by integrating
+// the polynomial that interpolates its values at the rule's nodes (the rule is interpolatory:
+// the steps sum to its value). Where the density is not smooth that polynomial may dip: the
+// steps are kept monotone, within the leaf's own value. The inverse-CDF construction of
+// Pharr, Jakob and Humphreys, Physically Based Rendering, 4th ed., §A.5.6, on a tabulated
+// distribution.
+Knots knotsOf(const std::vector<const QuadratureLeaf*>& leaves, int n) {
+  double total = 0;
+  for (const QuadratureLeaf* l : leaves) total += l->value;
+  Knots k;
+  double base = 0;
+  for (const QuadratureLeaf* l : leaves) {
+    if (k.at.empty()) k.at.push_back(l->a), k.cum.push_back(0);
+    if (!(l->value > 0)) {
+      k.add(l->b, base, true);
+      continue;
+    }
+    const int steps = stepsFor(l->value, total, n);
+    const std::vector<double> c = leafCumulative(*l, steps);
+    double previous = 0;
+    for (int j = 0; j < steps; ++j) {
+      const double v = j + 1 == steps ? l->value : std::clamp(c[j], previous, l->value);
+      k.add(j + 1 == steps ? l->b : l->a + (l->b - l->a) * (j + 1) / steps, base + v, false);
+      previous = v;
+    }
+    base += l->value;
+  }
+  return k;
+}
+
+// Σ weight·distribution over [lo, hi], as pieces between the union of their knots.
+std::vector<Piece> piecesOf(const std::vector<std::pair<double, Knots>>& parts, double lo,
+                            double hi) {
+  std::vector<double> x{lo, hi};
+  for (const auto& [w, k] : parts) x.insert(x.end(), k.at.begin(), k.at.end());
+  std::sort(x.begin(), x.end());
+  x.erase(std::unique(x.begin(), x.end()), x.end());
+  std::erase_if(x, [&](double v) { return v < lo || v > hi; });
+  std::vector<double> cum(x.size(), 0);
+  std::vector<char> zero(x.size() - 1, 1);
+  for (const auto& [w, k] : parts) {
+    if (k.at.empty()) continue;
+    size_t i = 0, j = 0;
+    for (size_t u = 0; u < x.size(); ++u) cum[u] += w * k(x[u], i);
+    for (size_t u = 0; u + 1 < x.size(); ++u)
+      if (zero[u] && !k.zeroAt(0.5 * (x[u] + x[u + 1]), j)) zero[u] = 0;
+  }
   std::vector<Piece> pieces;
-  for (const auto& r : refined) pieces.insert(pieces.end(), r.begin(), r.end());
-  co_return pieces;
+  for (size_t u = 0; u + 1 < x.size(); ++u)
+    pieces.push_back({x[u], x[u + 1], zero[u] ? 0 : std::max(0.0, cum[u + 1] - cum[u]),
+                      static_cast<bool>(zero[u])});
+  return pieces;
 }
 
 // The cumulative distribution over the pieces, linear inside each.
@@ -182,7 +182,7 @@ class Cumulative {
 std::vector<std::pair<double, double>> zeroRuns(const std::vector<Piece>& pieces) {
   std::vector<std::pair<double, double>> runs;
   for (const Piece& p : pieces) {
-    if (p.mass > 0) continue;
+    if (!p.zero) continue;
     if (!runs.empty() && runs.back().second == p.a)
       runs.back().second = p.b;
     else
@@ -263,14 +263,23 @@ std::vector<double> equalMassEdges(const Cumulative& cdf, double lo, double hi, 
 
 namespace {
 
-// The marginal distribution in x.
-Task<Cumulative> marginalOf(Density& f, const Integrals& integral) {
-  const Domain& grid = integral.grid;
-  const MassOf mass{f, integral};
-  std::vector<Piece> pieces =
-      co_await massPieces(mass, grid.x0, grid.x1, grid.nx, integral.features.breaksX,
-                          std::numeric_limits<double>::infinity());
-  co_return Cumulative(std::move(pieces));
+// The marginal distribution in x: the outer leaves of the nested integral over the whole
+// rectangle, which starts from kSplit·n / kLeafSteps equal pieces (the leaves' steps then hold
+// about 1/(kSplit·n) of a uniform density's mass each), its scale set by a pilot rule.
+Task<Cumulative> marginalOf(Density& f, const Domain& grid, const DensityFeatures& features,
+                            const QuadratureOptions& options) {
+  const CellBounds all{grid.x0, grid.x1, grid.y0, grid.y1};
+  QuadratureOptions pilot = tabulationOptions(options, 0);
+  pilot.maxDepth = 0;
+  const CellIntegral estimate = co_await rectangleIntegral(f, features, grid, all, pilot);
+  DensityFeatures cut = features;
+  const int first = static_cast<int>(std::ceil(kSplit * grid.nx / kLeafSteps));
+  for (int k = 1; k < first; ++k) cut.breaksX.push_back(grid.x0 + (grid.x1 - grid.x0) * k / first);
+  const std::vector<OuterLeaf> outer = co_await tabulateRectangle(
+      f, cut, grid, all, tabulationOptions(options, estimate.value), leafShare(grid.nx), 0);
+  std::vector<const QuadratureLeaf*> leaves;
+  for (const OuterLeaf& o : outer) leaves.push_back(&o.leaf);
+  co_return Cumulative(piecesOf({{1.0, knotsOf(leaves, grid.nx)}}, grid.x0, grid.x1));
 }
 
 // The grid where the marginal has no mass to follow, saying so.
@@ -293,23 +302,32 @@ Domain stripsOf(const Domain& grid, const Cumulative& marginal) {
   return d;
 }
 
-// Strip i's y edges, the strip being [cells.xEdges[i], cells.xEdges[i + 1]].
-Task<std::vector<double>> stripEdges(Density& f, const Integrals& integral,
-                                     const Cumulative& marginal, const Domain& cells, int i) {
-  const Domain& grid = integral.grid;
+// Strip i's y edges, the strip being [cells.xEdges[i], cells.xEdges[i + 1]]: its conditional
+// distribution, Σ over the outer rule's nodes x_k of w_k ∫ f(x_k, y) dy up to y, from the
+// profiles along y that the nested integral over the strip computes at its nodes (each cut
+// at the density's jumps at its own x, graded towards the peaks).
+Task<std::vector<double>> stripEdges(Density& f, const Domain& grid,
+                                     const DensityFeatures& features,
+                                     const QuadratureOptions& options, const Cumulative& marginal,
+                                     const Domain& cells, int i) {
   const double xa = cells.xEdges[i], xb = cells.xEdges[i + 1];
-  // The strip's conditional distribution over the support's extent; its jumps taken at
-  // the strip's middle (where they move with x, the cells follow them approximately).
   const std::pair<double, double> support = grid.supportY(xa, xb);
   const double lo = support.first, hi = support.second;
-  std::vector<double> cuts;
-  if (integral.features.breaksY) cuts = integral.features.breaksY(0.5 * (xa + xb));
   std::vector<double> edges;
   if (xb > xa && hi > lo) {
-    const MassOf mass{f, integral, true, xa, xb};
-    std::vector<Piece> pieces = co_await massPieces(mass, lo, hi, grid.ny, std::move(cuts),
-                                                    marginal.at(xb) - marginal.at(xa));
-    const Cumulative conditional(std::move(pieces));
+    const std::vector<OuterLeaf> outer = co_await tabulateRectangle(
+        f, features, grid, {xa, xb, lo, hi},
+        tabulationOptions(options, marginal.at(xb) - marginal.at(xa)), 0, leafShare(grid.ny));
+    std::vector<std::pair<double, Knots>> parts;
+    for (const OuterLeaf& o : outer) {
+      const std::array<double, kRuleNodes> w = ruleWeights(o.leaf.a, o.leaf.b);
+      for (size_t k = 0; k < kRuleNodes; ++k) {
+        std::vector<const QuadratureLeaf*> leaves;
+        for (const QuadratureLeaf& l : o.profiles[k].leaves) leaves.push_back(&l);
+        parts.emplace_back(w[k], knotsOf(leaves, grid.ny));
+      }
+    }
+    const Cumulative conditional(piecesOf(parts, lo, hi));
     if (conditional.total() > 0) edges = equalMassEdges(conditional, lo, hi, grid.ny);
   }
   if (edges.empty())  // a strip without mass: the grid's edges
@@ -323,13 +341,13 @@ Task<std::vector<double>> stripEdges(Density& f, const Integrals& integral,
 // The marginal in one computation, then every strip.
 Task<Domain> cellsOf(Density& f, const Domain& grid, const DensityFeatures& features,
                      QuadratureOptions options) {
-  const Integrals integral(grid, features, options);
-  const Cumulative marginal = co_await marginalOf(f, integral);
+  const Cumulative marginal = co_await marginalOf(f, grid, features, options);
   if (auto d = withoutMass(grid, marginal)) co_return *d;
   Domain d = stripsOf(grid, marginal);
   std::vector<Task<std::vector<double>>> strips;
   strips.reserve(grid.nx);
-  for (int i = 0; i < grid.nx; ++i) strips.push_back(stripEdges(f, integral, marginal, d, i));
+  for (int i = 0; i < grid.nx; ++i)
+    strips.push_back(stripEdges(f, grid, features, options, marginal, d, i));
   const std::vector<std::vector<double>> edges = co_await f.all(std::move(strips), true);
   for (int i = 0; i < grid.nx; ++i)
     std::copy(edges[i].begin(), edges[i].end(),

@@ -1,12 +1,15 @@
 #include <verity/chi2/quadrature.h>
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <array>
 #include <bit>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <tuple>
+#include <type_traits>
 #include <unordered_map>
 
 #include "quadrature_tasks.h"
@@ -17,7 +20,7 @@ namespace {
 
 using Kronrod = boost::math::quadrature::gauss_kronrod<double, 15>;
 using Gauss = boost::math::quadrature::gauss<double, 7>;
-constexpr size_t kNodes = 15;
+constexpr size_t kNodes = kRuleNodes;
 
 // A value of the integrand with the error it carries: the inner integral of a nested
 // quadrature, and that integral's own error estimate.
@@ -94,6 +97,74 @@ std::array<Rule, Rules> rulesFrom(const std::array<double, Rules + 1>& ends, con
   return rules;
 }
 
+// A rule that keeps its integrand's values at its nodes, so that a distribution can be
+// inverted inside its piece (the partition's tabulations, quadrature_tasks.h).
+struct NodeRule : Rule {
+  Nodes at{};
+  using Kept = QuadratureLeaf;
+  QuadratureLeaf keep(double a, double b) && { return {a, b, value, at}; }
+};
+// An outer rule of a tabulation: its nodes' values are inner integrals, each kept with its
+// leaves (the profile along y at that node).
+struct ProfileRule : Rule {
+  Nodes at{};
+  std::array<Profile, kNodes> profiles;
+  using Kept = OuterLeaf;
+  OuterLeaf keep(double a, double b) && { return {{a, b, value, at}, std::move(profiles)}; }
+};
+
+// Where a 1D integral's error lies: its own rule's estimates and the error its integrand
+// carried (both in the integral's units).
+struct Errors {
+  double rule = 0, carried = 0;
+};
+
+// A piece's integral and where its error lies: what an adaptive integral returns, from its
+// accepted pieces (leaf), a piece whose halves are round-off noise (noise), and two halves.
+struct Part {
+  double value = 0;
+  Errors errors;
+
+  static Part leaf(const Rule& r, double a, double b) {
+    return {r.value, {r.error * (b - a) / 2, r.carried}};
+  }
+  static Part noise(const Rule& r0, const Rule& r1, double a, double b) {
+    return {r0.value + r1.value, {(r0.error + r1.error) * (b - a) / 4, r0.carried + r1.carried}};
+  }
+  static Part sum(const Part& p, const Part& q) {
+    return {p.value + q.value,
+            {p.errors.rule + q.errors.rule, p.errors.carried + q.errors.carried}};
+  }
+};
+
+// The same with the accepted pieces themselves, in order: a tabulation's (R: NodeRule or
+// ProfileRule).
+template <class R>
+struct Leaves {
+  Part part;
+  std::vector<typename R::Kept> kept;
+
+  static Leaves leaf(R&& r, double a, double b) {
+    Leaves l{Part::leaf(r, a, b), {}};
+    l.kept.push_back(std::move(r).keep(a, b));
+    return l;
+  }
+  static Leaves noise(R&& r0, R&& r1, double a, double b) {
+    Leaves l{Part::noise(r0, r1, a, b), {}};
+    const double m = 0.5 * (a + b);
+    l.kept.push_back(std::move(r0).keep(a, m));
+    l.kept.push_back(std::move(r1).keep(m, b));
+    return l;
+  }
+  static Leaves sum(Leaves&& p, Leaves&& q) {
+    p.part = Part::sum(p.part, q.part);
+    std::move(q.kept.begin(), q.kept.end(), std::back_inserter(p.kept));
+    return std::move(p);
+  }
+};
+template <class R>
+using ResultOf = std::conditional_t<std::is_same_v<R, Rule>, Part, Leaves<R>>;
+
 // The rules a cell's integrals computed along y, by their x and piece: its pilot estimate, its
 // coarse level and its verifying level start from the same pieces, whose densities are then
 // evaluated once (half the points of a smooth lobe's grid). Used by one computation at a time.
@@ -123,16 +194,18 @@ class RuleMemo {
 // The density along y at one x, the inner integrals' integrand. Its rules are awaiters, not
 // computations: the nodes of a rule, or of a piece's two halves, in one request, unless the
 // memo has them all.
-struct AlongY {
+template <class R>
+struct AlongYOf {
+  using Result = ResultOf<R>;
   Density& density;
   double x;
   RuleMemo* memo = nullptr;
 
   template <size_t Rules>
   struct NodeValues {
-    const AlongY& along;
+    const AlongYOf& along;
     std::array<double, Rules + 1> ends;
-    std::array<Rule, Rules> rules;
+    std::array<R, Rules> rules;
     bool remembered = false;
     std::array<Point2d, kNodes * Rules> points;
     std::array<double, kNodes * Rules> values;
@@ -145,26 +218,35 @@ struct AlongY {
       return along.density.at(points.data(), values.data(), points.size());
     }
     bool await_ready() {
-      if (along.memo) {
-        remembered = true;
-        for (size_t k = 0; k < Rules && remembered; ++k)
-          if (const Rule* r = along.memo->find(along.x, ends[k], ends[k + 1]))
-            rules[k] = *r;
-          else
-            remembered = false;
-        if (remembered) return true;
-      }
+      if constexpr (std::is_same_v<R, Rule>)
+        if (along.memo) {
+          remembered = true;
+          for (size_t k = 0; k < Rules && remembered; ++k)
+            if (const Rule* r = along.memo->find(along.x, ends[k], ends[k + 1]))
+              rules[k] = *r;
+            else
+              remembered = false;
+          if (remembered) return true;
+        }
       return request().await_ready();
     }
     void await_suspend(std::coroutine_handle<> waiting) {
       along.density.wait(points.data(), values.data(), points.size(), waiting);
     }
-    std::array<Rule, Rules> await_resume() {
+    std::array<R, Rules> await_resume() {
       if (remembered) return rules;
-      rules = rulesFrom<Rules>(ends, [&](size_t i) { return Sample{values[i], 0}; });
-      if (along.memo)
-        for (size_t k = 0; k < Rules; ++k)
-          along.memo->keep(along.x, ends[k], ends[k + 1], rules[k]);
+      if constexpr (std::is_same_v<R, Rule>) {
+        rules = rulesFrom<Rules>(ends, [&](size_t i) { return Sample{values[i], 0}; });
+        if (along.memo)
+          for (size_t k = 0; k < Rules; ++k)
+            along.memo->keep(along.x, ends[k], ends[k + 1], rules[k]);
+      } else {
+        const auto plain = rulesFrom<Rules>(ends, [&](size_t i) { return Sample{values[i], 0}; });
+        for (size_t k = 0; k < Rules; ++k) {
+          static_cast<Rule&>(rules[k]) = plain[k];
+          std::copy_n(values.begin() + k * kNodes, kNodes, rules[k].at.begin());
+        }
+      }
       return rules;
     }
   };
@@ -173,11 +255,7 @@ struct AlongY {
   NodeValues<2> halves(double a, double m, double b) const { return {*this, {a, m, b}}; }
 };
 
-// Where a 1D integral's error lies: its own rule's estimates and the error its integrand
-// carried (both in the integral's units).
-struct Errors {
-  double rule = 0, carried = 0;
-};
+using AlongY = AlongYOf<Rule>;
 
 // Bisection with the 15-point Gauss–Kronrod rule on each piece. A piece is accepted once
 // its error estimate is within its share, by width, of the interval's tolerance, or once
@@ -193,30 +271,23 @@ struct Errors {
 // what it reports is scaled to the integral's own units. The error an integrand carries
 // (an inner integral's) is summed over the accepted pieces only, each piece's by its own
 // Kronrod weights: the integral of that error over x, not a mean over the calls.
-// A piece's integral and where its error lies.
-struct Part {
-  double value = 0;
-  Errors errors;
-};
 
 // Whether a piece is accepted as its rule gives it: within its share of the tolerance, or at
 // the greatest depth.
 bool accepted(const Rule& r, double a, double b, double tolerancePerWidth, unsigned depth) {
   return depth == 0 || r.error <= tolerancePerWidth * (b - a);
 }
-Part leaf(const Rule& r, double a, double b) {
-  return {r.value, {r.error * (b - a) / 2, r.carried}};
-}
 
 // Bisection with the 15-point Gauss–Kronrod rule on each piece (the comment above), of a piece
 // its rule did not settle; the halves of a piece, and their own halves, are refined together.
 // A half accepted as it is costs no computation of its own.
 template <class Integrand>
-Task<Part> bisect(Density& d, const Integrand& f, double a, double b, Rule whole,
-                  double tolerancePerWidth, unsigned depth) {
+Task<typename Integrand::Result> bisect(Density& d, const Integrand& f, double a, double b,
+                                        Rule whole, double tolerancePerWidth, unsigned depth) {
+  using Result = typename Integrand::Result;
   const double m = 0.5 * (a + b);
-  const std::array<Rule, 2> halves = co_await f.halves(a, m, b);
-  const Rule &r0 = halves[0], &r1 = halves[1];
+  auto halves = co_await f.halves(a, m, b);
+  const Rule r0 = halves[0], r1 = halves[1];
   const double e0 = r0.error, e1 = r1.error;
   // Round-off detection (as in QUADPACK's QAG, Piessens et al. 1983): bisection shrinks the
   // error of a smooth piece many times and that of a jump by half, but leaves the
@@ -226,11 +297,12 @@ Task<Part> bisect(Density& d, const Integrand& f, double a, double b, Rule whole
   // errors are unequal) or moves the estimate by more than its error.
   const bool noise = e0 + e1 > 0.8 * whole.error && std::min(e0, e1) > 0.25 * std::max(e0, e1) &&
                      std::fabs(r0.value + r1.value - whole.value) <= 2 * whole.error;
-  if (noise)
-    co_return Part{r0.value + r1.value, {(e0 + e1) * (b - a) / 4, r0.carried + r1.carried}};
+  if (noise) co_return Result::noise(std::move(halves[0]), std::move(halves[1]), a, b);
   const bool done0 = accepted(r0, a, m, tolerancePerWidth, depth - 1),
              done1 = accepted(r1, m, b, tolerancePerWidth, depth - 1);
-  std::array<Part, 2> p{leaf(r0, a, m), leaf(r1, m, b)};
+  std::array<Result, 2> p;
+  if (done0) p[0] = Result::leaf(std::move(halves[0]), a, m);
+  if (done1) p[1] = Result::leaf(std::move(halves[1]), m, b);
   if (!done0 && !done1)
     p = co_await d.both(bisect(d, f, a, m, r0, tolerancePerWidth, depth - 1),
                         bisect(d, f, m, b, r1, tolerancePerWidth, depth - 1));
@@ -238,19 +310,21 @@ Task<Part> bisect(Density& d, const Integrand& f, double a, double b, Rule whole
     p[0] = co_await bisect(d, f, a, m, r0, tolerancePerWidth, depth - 1);
   else if (!done1)
     p[1] = co_await bisect(d, f, m, b, r1, tolerancePerWidth, depth - 1);
-  co_return Part{p[0].value + p[1].value,
-                 {p[0].errors.rule + p[1].errors.rule, p[0].errors.carried + p[1].errors.carried}};
+  co_return Result::sum(std::move(p[0]), std::move(p[1]));
 }
 
 // The adaptive integral of an integrand of Samples, to max(relTolerance·|∫f|, absTolerance).
 template <class Integrand>
-Task<Part> adaptive(Density& d, const Integrand& f, double a, double b, QuadratureOptions options,
-                    double absTolerance) {
-  if (!(b > a)) co_return Part{};
-  const Rule whole = (co_await f.rule(a, b))[0];
+Task<typename Integrand::Result> adaptive(Density& d, const Integrand& f, double a, double b,
+                                          QuadratureOptions options, double absTolerance) {
+  using Result = typename Integrand::Result;
+  if (!(b > a)) co_return Result{};
+  auto first = co_await f.rule(a, b);
+  const Rule whole = first[0];
   const double tolerance = std::max(options.relTolerance * std::fabs(whole.value), absTolerance);
   const double perWidth = tolerance / (b - a);
-  if (accepted(whole, a, b, perWidth, options.maxDepth)) co_return leaf(whole, a, b);
+  if (accepted(whole, a, b, perWidth, options.maxDepth))
+    co_return Result::leaf(std::move(first[0]), a, b);
   co_return co_await bisect(d, f, a, b, whole, perWidth, options.maxDepth);
 }
 
@@ -302,14 +376,12 @@ struct Nested {
   RuleMemo* memo;
 };
 
-// The inner integral at x with its error estimate, which the outer rule integrates over x
-// with its own weights (the nested rule's error is at most the outer rule's error plus
-// ∫ |inner error| dx). An unweighted mean over the calls would count a call on a piece
-// graded 10⁻⁷ of a cell wide, next to a peak or a jump, as much as one on a whole cell.
-Task<Sample> innerIntegral(Density& d, const Nested& spec, double x) {
+// The pieces of the inner range at x, in order: the support's extent in y split at the
+// density's jumps and graded towards the peaks; none where the support is empty there.
+std::vector<double> innerPieces(const Nested& spec, double x) {
   double lo = spec.y0, hi = spec.y1;
   if (spec.domain) std::tie(lo, hi) = spec.domain->clipY(x, spec.y0, spec.y1);
-  if (!(hi > lo)) co_return Sample{};
+  if (!(hi > lo)) return {};
   // Split the y range at the density's jumps.
   std::vector<double> cuts;
   if (spec.breaks)
@@ -320,14 +392,26 @@ Task<Sample> innerIntegral(Density& d, const Nested& spec, double x) {
   // 1) is a peak of width ~θ²/2 in cos θ at y = ±1.
   if (spec.domain && spec.domain->kind == DomainKind::Sphere)
     for (double pole : {-1.0, 1.0}) addGradedCuts(pole, 1.0, lo, hi, cuts);
-  const std::vector<double> ys = pieces(lo, hi, std::move(cuts));
+  return pieces(lo, hi, std::move(cuts));
+}
+
+// The cell's absolute budget, spread over y, for the piece [ys[k], ys[k + 1]]; an inner error
+// enters the cell times its width.
+double pieceTolerance(const Nested& spec, const std::vector<double>& ys, size_t k) {
+  return spec.options.cellAbsTolerance * (ys[k + 1] - ys[k]) /
+         ((spec.y1 - spec.y0) * (spec.x1 - spec.x0));
+}
+
+// The inner integral at x with its error estimate, which the outer rule integrates over x
+// with its own weights (the nested rule's error is at most the outer rule's error plus
+// ∫ |inner error| dx). An unweighted mean over the calls would count a call on a piece
+// graded 10⁻⁷ of a cell wide, next to a peak or a jump, as much as one on a whole cell.
+Task<Sample> innerIntegral(Density& d, const Nested& spec, double x) {
+  const std::vector<double> ys = innerPieces(spec, x);
+  if (ys.empty()) co_return Sample{};
   const AlongY along{d, x, spec.memo};
   auto piece = [&](size_t k) {
-    // The cell's absolute budget, spread over y; an inner error enters the cell times its
-    // width.
-    const double absTolerance = spec.options.cellAbsTolerance * (ys[k + 1] - ys[k]) /
-                                ((spec.y1 - spec.y0) * (spec.x1 - spec.x0));
-    return adaptive(d, along, ys[k], ys[k + 1], spec.options, absTolerance);
+    return adaptive(d, along, ys[k], ys[k + 1], spec.options, pieceTolerance(spec, ys, k));
   };
   Sample s;
   auto add = [&](const Part& p) {
@@ -348,6 +432,7 @@ Task<Sample> innerIntegral(Density& d, const Nested& spec, double x) {
 // The inner integrals at a rule's nodes in x, the outer integral's integrand: every node's
 // integral (of a rule, or of a piece's two halves) refined together.
 struct InnerIntegrals {
+  using Result = Part;
   Density& density;
   const Nested& spec;
 
@@ -367,13 +452,19 @@ struct InnerIntegrals {
   }
 };
 
-Task<CellIntegral> nested(Density& d, Nested spec) {
+// The outer range's pieces, in order: split at the density's jumps in x and graded towards
+// the peaks.
+std::vector<double> outerPieces(const Nested& spec) {
   std::vector<double> xCuts;
   for (double b : spec.xBreaks)
     if (b > spec.x0 && b < spec.x1) xCuts.push_back(b);
   for (const Point2d& p : spec.peaks)
     addGradedCuts(p.x(), spec.x1 - spec.x0, spec.x0, spec.x1, xCuts);
-  const std::vector<double> xs = pieces(spec.x0, spec.x1, std::move(xCuts));
+  return pieces(spec.x0, spec.x1, std::move(xCuts));
+}
+
+Task<CellIntegral> nested(Density& d, Nested spec) {
+  const std::vector<double> xs = outerPieces(spec);
   QuadratureOptions outer = spec.options;
   outer.relTolerance = spec.options.outerRelTolerance;
   const InnerIntegrals inner{d, spec};
@@ -413,9 +504,10 @@ double integrate2D(const DensityFn& f, double x0, double x1, double y0, double y
 
 namespace {
 
-// ∫∫ f over a rectangle, as integrateRectangle; its rules along y kept in `memo` where given.
-Task<CellIntegral> rectangle(Density& f, const DensityFeatures& features, const Domain& d,
-                             CellBounds b, QuadratureOptions options, RuleMemo* memo) {
+// The nested integral over a rectangle, as integrateRectangle computes it; its rules along y
+// kept in `memo` where given.
+Nested specFor(const DensityFeatures& features, const Domain& d, const CellBounds& b,
+               const QuadratureOptions& options, RuleMemo* memo) {
   const double w = b.x1 - b.x0, h = b.y1 - b.y0;
   // The peaks that matter here: inside the rectangle or within half its size of it, whose
   // tail would otherwise sit at an end of an interval as a spike. A strip far longer than
@@ -432,19 +524,203 @@ Task<CellIntegral> rectangle(Density& f, const DensityFeatures& features, const 
     if (!(sphere && std::fabs(p.y()) > 1 - std::min(h, d.cellHeight())) && p.x() > b.x0 - marginX &&
         p.x() < b.x1 + marginX && p.y() > b.y0 - marginY && p.y() < b.y1 + marginY)
       near.push_back(p);
+  return {features.breaksY,
+          features.breaksX,
+          std::move(near),
+          &d,
+          b.x0,
+          b.x1,
+          b.y0,
+          b.y1,
+          options,
+          memo};
+}
+
+// ∫∫ f over a rectangle, as integrateRectangle; its rules along y kept in `memo` where given.
+Task<CellIntegral> rectangle(Density& f, const DensityFeatures& features, const Domain& d,
+                             CellBounds b, QuadratureOptions options, RuleMemo* memo) {
   // Named, not a temporary of the co_await expression: GCC 12 destroys such a temporary twice.
-  Nested spec{features.breaksY,
-              features.breaksX,
-              std::move(near),
-              &d,
-              b.x0,
-              b.x1,
-              b.y0,
-              b.y1,
-              options,
-              memo};
+  Nested spec = specFor(features, d, b, options, memo);
   const CellIntegral r = co_await nested(f, std::move(spec));
   co_return r;
+}
+
+// Tabulations (quadrature_tasks.h): the same nested integral, keeping its leaves.
+
+// Pieces narrower than this fraction of their range are not split for their mass: the
+// densities are evaluated in single precision, whose steps (~10⁻⁷ relative) are coarser.
+constexpr double kMinWidth = 1e-9;
+
+// The profile along y at x: the inner integral, as innerIntegral computes it, with its leaves.
+Task<Profile> profileAt(Density& d, const Nested& spec, double x) {
+  Profile p;
+  p.x = x;
+  const std::vector<double> ys = innerPieces(spec, x);
+  if (ys.empty()) co_return p;
+  const AlongYOf<NodeRule> along{d, x};
+  std::vector<Task<Leaves<NodeRule>>> parts;
+  parts.reserve(ys.size() - 1);
+  for (size_t k = 0; k + 1 < ys.size(); ++k)
+    parts.push_back(
+        adaptive(d, along, ys[k], ys[k + 1], spec.options, pieceTolerance(spec, ys, k)));
+  std::vector<Leaves<NodeRule>> done = co_await d.all(std::move(parts));
+  for (Leaves<NodeRule>& l : done) {
+    p.value += l.part.value;
+    p.error += l.part.errors.rule;
+    std::move(l.kept.begin(), l.kept.end(), std::back_inserter(p.leaves));
+  }
+  co_return p;
+}
+
+// The profiles at a rule's nodes in x, a tabulation's outer integrand (as InnerIntegrals).
+struct ProfileIntegrals {
+  using Result = Leaves<ProfileRule>;
+  Density& density;
+  const Nested& spec;
+
+  template <size_t Rules>
+  Task<std::array<ProfileRule, Rules>> rules(std::array<double, Rules + 1> ends) const {
+    std::vector<Task<Profile>> inner;
+    inner.reserve(kNodes * Rules);
+    for (size_t k = 0; k < Rules; ++k)
+      for (double x : kronrodNodes(ends[k], ends[k + 1]))
+        inner.push_back(profileAt(density, spec, x));
+    std::vector<Profile> s = co_await density.all(std::move(inner), true);
+    const auto plain = rulesFrom<Rules>(ends, [&](size_t i) {
+      return Sample{s[i].value, s[i].error};
+    });
+    std::array<ProfileRule, Rules> r;
+    for (size_t k = 0; k < Rules; ++k) {
+      static_cast<Rule&>(r[k]) = plain[k];
+      for (size_t i = 0; i < kNodes; ++i) {
+        r[k].at[i] = s[k * kNodes + i].value;
+        r[k].profiles[i] = std::move(s[k * kNodes + i]);
+      }
+    }
+    co_return r;
+  }
+  Task<std::array<ProfileRule, 1>> rule(double a, double b) const { return rules<1>({a, b}); }
+  Task<std::array<ProfileRule, 2>> halves(double a, double m, double b) const {
+    return rules<2>({a, m, b});
+  }
+};
+
+const QuadratureLeaf& ends(const QuadratureLeaf& l) {
+  return l;
+}
+const QuadratureLeaf& ends(const OuterLeaf& l) {
+  return l.leaf;
+}
+
+// A leaf's two halves, each with its own rule (Kronrod nodes do not nest).
+template <class Integrand, class Kept>
+Task<std::array<Kept, 2>> halvesOf(const Integrand& f, Kept leaf) {
+  const double a = ends(leaf).a, b = ends(leaf).b, m = 0.5 * (a + b);
+  auto h = co_await f.halves(a, m, b);
+  co_return std::array<Kept, 2>{std::move(h[0]).keep(a, m), std::move(h[1]).keep(m, b)};
+}
+
+// The leaves bisected, level by level, until each holds at most `share` of their total (or
+// is minWidth wide). The total is taken afresh at each level, so that a lobe that the
+// adaptive rule underestimated does not make every piece of it "large"; at most 1/share
+// leaves exceed it, so a level costs at most 2/share rules, and there are at most
+// kSplitLevels: a bounded cost whatever the density does (a staircase of single-precision
+// steps included). Where the levels run out, the steps of a leaf hold more than their share
+// (partition.h says what that costs).
+constexpr int kSplitLevels = 12;
+template <class Integrand, class Kept>
+Task<std::vector<Kept>> splitAll(Density& d, const Integrand& f, std::vector<Kept> leaves,
+                                 double share, double minWidth) {
+  for (int level = 0; level < kSplitLevels; ++level) {
+    double total = 0;
+    for (const Kept& l : leaves) total += ends(l).value;
+    const double most = share * total;
+    std::vector<Task<std::array<Kept, 2>>> halves;
+    for (const Kept& l : leaves)
+      if (ends(l).value > most && ends(l).b - ends(l).a > minWidth)
+        halves.push_back(halvesOf(f, l));
+    if (halves.empty()) break;
+    std::vector<std::array<Kept, 2>> done = co_await d.all(std::move(halves));
+    std::vector<Kept> next;
+    size_t k = 0;
+    for (Kept& l : leaves)
+      if (ends(l).value > most && ends(l).b - ends(l).a > minWidth) {
+        next.push_back(std::move(done[k][0]));
+        next.push_back(std::move(done[k++][1]));
+      } else {
+        next.push_back(std::move(l));
+      }
+    leaves = std::move(next);
+  }
+  co_return leaves;
+}
+
+Task<std::vector<OuterLeaf>> tabulate(Density& d, Nested spec, double xShare, double yShare) {
+  const std::vector<double> xs = outerPieces(spec);
+  QuadratureOptions outer = spec.options;
+  outer.relTolerance = spec.options.outerRelTolerance;
+  const ProfileIntegrals inner{d, spec};
+  std::vector<Task<Leaves<ProfileRule>>> parts;
+  parts.reserve(xs.size() - 1);
+  for (size_t k = 0; k + 1 < xs.size(); ++k)
+    parts.push_back(
+        adaptive(d, inner, xs[k], xs[k + 1], outer,
+                 spec.options.cellAbsTolerance * (xs[k + 1] - xs[k]) / (spec.x1 - spec.x0)));
+  std::vector<Leaves<ProfileRule>> done = co_await d.all(std::move(parts), true);
+  std::vector<OuterLeaf> leaves;
+  for (Leaves<ProfileRule>& l : done) {
+    std::move(l.kept.begin(), l.kept.end(), std::back_inserter(leaves));
+  }
+  if (xShare > 0)
+    leaves =
+        co_await splitAll(d, inner, std::move(leaves), xShare, kMinWidth * (spec.x1 - spec.x0));
+  if (yShare > 0) {
+    std::vector<AlongYOf<NodeRule>> along;
+    along.reserve(leaves.size() * kNodes);
+    std::vector<Task<std::vector<QuadratureLeaf>>> profiles;
+    profiles.reserve(leaves.size() * kNodes);
+    for (OuterLeaf& o : leaves)
+      for (Profile& p : o.profiles) {
+        along.push_back({d, p.x});
+        profiles.push_back(splitAll(d, along.back(), std::move(p.leaves), yShare,
+                                    kMinWidth * (spec.y1 - spec.y0)));
+      }
+    std::vector<std::vector<QuadratureLeaf>> split = co_await d.all(std::move(profiles), true);
+    size_t k = 0;
+    for (OuterLeaf& o : leaves)
+      for (Profile& p : o.profiles) p.leaves = std::move(split[k++]);
+  }
+  co_return leaves;
+}
+
+// C(j, i) = ∫ from −1 to −1 + 2(j + 1)/kLeafSteps of ℓ_i, the Lagrange polynomial of the
+// rule's node i (kronrodNodes(−1, 1)): the integral of the polynomial interpolating a leaf's
+// values up to each step. Through the Legendre basis, well conditioned on these nodes:
+// ℓ = V⁻¹ P with V(i, m) = P_m(t_i), and ∫_{−1}^{s} P_m = (P_{m+1}(s) − P_{m−1}(s))/(2m + 1).
+const Eigen::Matrix<double, kLeafSteps, kNodes>& cumulativeWeights() {
+  static const Eigen::Matrix<double, kLeafSteps, kNodes> c = [] {
+    auto legendre = [](double s, size_t count) {
+      std::vector<double> p{1.0, s};
+      for (size_t m = 1; m + 1 < count; ++m)
+        p.push_back(((2 * m + 1) * s * p[m] - m * p[m - 1]) / (m + 1));
+      return p;
+    };
+    const Nodes t = kronrodNodes(-1, 1);
+    Eigen::Matrix<double, kNodes, kNodes> v;
+    for (size_t i = 0; i < kNodes; ++i) {
+      const std::vector<double> p = legendre(t[i], kNodes);
+      for (size_t m = 0; m < kNodes; ++m) v(i, m) = p[m];
+    }
+    Eigen::Matrix<double, kLeafSteps, kNodes> q;
+    for (int j = 0; j < kLeafSteps; ++j) {
+      const double s = -1 + 2.0 * (j + 1) / kLeafSteps;
+      const std::vector<double> p = legendre(s, kNodes + 1);
+      q(j, 0) = s + 1;
+      for (size_t m = 1; m < kNodes; ++m) q(j, m) = (p[m + 1] - p[m - 1]) / (2 * m + 1);
+    }
+    return Eigen::Matrix<double, kLeafSteps, kNodes>(q * v.inverse());
+  }();
+  return c;
 }
 
 }  // namespace
@@ -453,6 +729,39 @@ Task<CellIntegral> rectangleIntegral(Density& f, const DensityFeatures& features
                                      CellBounds b, QuadratureOptions options) {
   const CellIntegral r = co_await rectangle(f, features, d, b, options, nullptr);
   co_return r;
+}
+
+Task<std::vector<OuterLeaf>> tabulateRectangle(Density& f, const DensityFeatures& features,
+                                               const Domain& d, CellBounds b,
+                                               QuadratureOptions options, double xShare,
+                                               double yShare) {
+  Nested spec = specFor(features, d, b, options, nullptr);
+  std::vector<OuterLeaf> r = co_await tabulate(f, std::move(spec), xShare, yShare);
+  co_return r;
+}
+
+std::array<double, kRuleNodes> ruleWeights(double a, double b) {
+  const double scale = (b - a) / 2;
+  const auto& wk = Kronrod::weights();
+  std::array<double, kRuleNodes> w;
+  size_t n = 0;
+  w[n++] = wk[0] * scale;
+  for (unsigned i = 2; i < wk.size(); i += 2, n += 2) w[n] = w[n + 1] = wk[i] * scale;
+  for (unsigned i = 1; i < wk.size(); i += 2, n += 2) w[n] = w[n + 1] = wk[i] * scale;
+  return w;
+}
+
+std::vector<double> leafCumulative(const QuadratureLeaf& leaf, int steps) {
+  const auto& c = cumulativeWeights();
+  const double scale = (leaf.b - leaf.a) / 2;
+  std::vector<double> cum(steps);
+  for (int j = 0; j < steps; ++j) {
+    const int row = (j + 1) * (kLeafSteps / steps) - 1;
+    double s = 0;
+    for (size_t i = 0; i < kNodes; ++i) s += c(row, i) * leaf.at[i];
+    cum[j] = scale * s;
+  }
+  return cum;
 }
 
 Task<CellIntegral> cellIntegral(Density& f, const DensityFeatures& features, const Domain& d,

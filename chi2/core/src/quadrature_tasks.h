@@ -5,6 +5,9 @@
 
 #include <verity/chi2/quadrature.h>
 
+#include <array>
+#include <vector>
+
 #include "density.h"
 
 namespace verity::chi2 {
@@ -14,5 +17,40 @@ Task<CellIntegral> rectangleIntegral(Density& f, const DensityFeatures& features
                                      QuadratureOptions options);
 Task<CellIntegral> cellIntegral(Density& f, const DensityFeatures& features, const Domain& domain,
                                 int cell, QuadratureOptions options);
+
+// Tabulations, for the partition (partition.cpp) to invert: a nested integral's pieces as its
+// refinement left them, with the density at each rule's nodes.
+inline constexpr size_t kRuleNodes = 15;
+// A piece [a, b] of an adaptive integral: its Kronrod rule's value and the integrand at the
+// rule's nodes, in the order of ruleWeights.
+struct QuadratureLeaf {
+  double a = 0, b = 0, value = 0;
+  std::array<double, kRuleNodes> at{};
+};
+// The inner integral over y at x, as the quadrature computes it: its value, error estimate and
+// leaves in order (none where the support is empty at x).
+struct Profile {
+  double x = 0, value = 0, error = 0;
+  std::vector<QuadratureLeaf> leaves;
+};
+// An outer leaf in x (its values: the inner integrals at its nodes) with the profile at each node.
+struct OuterLeaf {
+  QuadratureLeaf leaf;
+  std::array<Profile, kRuleNodes> profiles;
+};
+// ∫∫ f over a rectangle, as integrateRectangle refines it, as its outer leaves. Then leaves
+// holding more than xShare of the whole (of their profile: yShare) are bisected until they
+// hold no more, so that a distribution inverted inside them is resolved (0: not at all).
+Task<std::vector<OuterLeaf>> tabulateRectangle(Density& f, const DensityFeatures& features,
+                                               const Domain& domain, CellBounds rectangle,
+                                               QuadratureOptions options, double xShare,
+                                               double yShare);
+// The rule's nodes' weights on [a, b], in the order of QuadratureLeaf::at.
+std::array<double, kRuleNodes> ruleWeights(double a, double b);
+// The integral from a to a + (b − a)·j/steps, j = 1 … steps, of the polynomial interpolating
+// the leaf's values at the rule's nodes; the rule is interpolatory, so the last is the leaf's
+// value (up to rounding). steps divides kLeafSteps.
+inline constexpr int kLeafSteps = 32;
+std::vector<double> leafCumulative(const QuadratureLeaf& leaf, int steps);
 
 }  // namespace verity::chi2

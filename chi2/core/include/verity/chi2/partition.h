@@ -33,23 +33,40 @@ std::string cellLayoutName(CellLayout layout);  // "equal" or "grid", as `verity
 CellLayout parseCellLayout(const std::string& name, const std::string& option = "--cells");
 
 // The grid's rectangle cut into grid.nx × grid.ny cells of nearly equal probability under f,
-// whose features guide the quadrature as for integrateGrid. The inversion only needs to be
-// approximate: the pieces that it integrates (to a loose tolerance) are bisected until each
-// holds at most 1/(4n) of the mass to be cut into n, and an edge is placed by linear
-// interpolation inside a piece, so a cell's probability is within about ±1/(2K) of 1/K for
-// K cells (PartitionTest measures it). The expected counts are then integrated per cell by
-// integrateGrid as on the grid. Where f is zero at an end of a strip's range, or over an
-// interior run at least a grid cell wide, that run is a cell of its own, expecting nothing,
-// so that a sample there fails outright (chiSquareTest) rather than merely adding to a
-// populated cell. The result is deterministic and independent of the number of threads.
-// Where f integrates to zero (or to no finite number) there is no mass to follow: the
-// uniform grid is returned, with gridReason saying so.
+// whose features guide the quadrature as for integrateGrid. The distributions are tabulated by
+// the quadrature's own nested Gauss–Kronrod rule and error control (to 10⁻³ inner, 10⁻²
+// outer, no verifying level), keeping its leaves: the marginal in x from the outer leaves of
+// the integral over the whole rectangle (each node's inner integral over the full range of
+// y), then each strip's conditional in y as Σ w_k ∫ f(x_k, y) dy over the nodes x_k of the
+// integral over the strip, each profile along y cut at the jumps and graded towards the peaks
+// at its own x. Inside a leaf the distribution is the integral of the polynomial that
+// interpolates the rule's values (kept monotone), in steps of about 1/(4n) of the mass to be
+// cut into n; leaves holding more than 32 such steps are bisected first. An edge is placed by
+// linear interpolation inside a step, so a cell's probability is within about ±1/(2K) of 1/K
+// for K cells (PartitionTest measures it). The expected counts are then integrated per cell
+// by integrateGrid as on the grid. Where f is zero at an end of a strip's range, or over an
+// interior run at least a grid cell wide (zero at every node there), that run is a cell of its
+// own, expecting nothing, so that a sample there fails outright (chiSquareTest) rather than
+// merely adding to a populated cell. The result is deterministic and independent of the number
+// of threads.
+//
+// Cost: a bounded number of density evaluations whatever f does. Each piece's refinement
+// stops at QuadratureOptions::maxDepth (or where its halves are round-off noise), and the
+// bisection for mass after 12 levels, each bisecting at most 4n/32 leaves (those holding more
+// than 32/(4n) of the mass, taken afresh at each level). Measured in evaluations, partition
+// against the cells' integrals (FrameworkPartitionCost): a cosine lobe 0.38M against 0.66M, Phong
+// 10⁴ 1.08M against 1.12M; Phong 10⁴ evaluated in float (a staircase of 6·10⁻⁴ steps) 6.1M against
+// 51M. What a capped refinement costs is accuracy of the edges only: where the levels or the depth
+// run out, a step holds more than 1/(4n) of the mass and the cells there are less equal, never
+// wrong, since their probabilities are integrated accurately afterwards. Where f integrates to zero
+// (or to no finite number) there is no mass to follow: the uniform grid is returned, with
+// gridReason saying so.
 Domain equalProbabilityCells(const Domain& grid, const DensityFn& f,
                              const DensityFeatures& features = {},
                              const QuadratureOptions& options = {});
 
-// The same cells from a density evaluated in batches (DensityBatchFn): the marginal's
-// refinement, then every strip's together, a call per level.
+// The same cells, bit for bit, from a density evaluated in batches (DensityBatchFn): the
+// marginal's refinement, then every strip's together, a call per level.
 Domain equalProbabilityCells(const Domain& grid, const DensityBatchFn& f,
                              const DensityFeatures& features, const QuadratureOptions& options);
 
