@@ -302,30 +302,60 @@ Domain stripsOf(const Domain& grid, const Cumulative& marginal) {
   return d;
 }
 
-// Strip i's y edges, the strip being [cells.xEdges[i], cells.xEdges[i + 1]]: its conditional
-// distribution, Σ over the outer rule's nodes x_k of w_k ∫ f(x_k, y) dy up to y, from the
-// profiles along y that the nested integral over the strip computes at its nodes (each cut
-// at the density's jumps at its own x, graded towards the peaks).
+// The strip [xa, xb] that the partition's strip i covers, over its support, and what its
+// tabulation integrates to.
+CellBounds stripOf(const Domain& grid, const Domain& cells, int i) {
+  const double xa = cells.xEdges[i], xb = cells.xEdges[i + 1];
+  const std::pair<double, double> support = grid.supportY(xa, xb);
+  return {xa, xb, support.first, support.second};
+}
+QuadratureOptions stripOptions(const QuadratureOptions& options, const Cumulative& marginal,
+                               const CellBounds& strip) {
+  return tabulationOptions(options, marginal.at(strip.x1) - marginal.at(strip.x0));
+}
+
+// The profile along y at the strips' edge k. The rule's nodes never reach a strip's ends: a
+// support that moves with x (a horizon in a rotated frame) reaches furthest there, and a cell
+// taken for empty where an end has mass would receive samples. Computed once for the two
+// strips that share the edge, as the nested integral over the strip after it (before it, for
+// the last) would compute it.
+Task<Profile> edgeProfile(Density& f, const Domain& grid, const DensityFeatures& features,
+                          const QuadratureOptions& options, const Cumulative& marginal,
+                          const Domain& cells, int k) {
+  const CellBounds strip = stripOf(grid, cells, std::min(k, grid.nx - 1));
+  Profile p;
+  if (strip.x1 > strip.x0 && strip.y1 > strip.y0)
+    p = co_await profileAlongY(f, features, grid, strip, stripOptions(options, marginal, strip),
+                               cells.xEdges[k]);
+  co_return p;
+}
+
+// Strip i's y edges: its conditional distribution, Σ over the outer rule's nodes x_k of
+// w_k ∫ f(x_k, y) dy up to y, from the profiles along y that the nested integral over the strip
+// computes at its nodes (each cut at the density's jumps at its own x, graded towards the
+// peaks). The profiles at its ends weigh nothing; they only find mass where every node found
+// none.
 Task<std::vector<double>> stripEdges(Density& f, const Domain& grid,
                                      const DensityFeatures& features,
                                      const QuadratureOptions& options, const Cumulative& marginal,
-                                     const Domain& cells, int i) {
-  const double xa = cells.xEdges[i], xb = cells.xEdges[i + 1];
-  const std::pair<double, double> support = grid.supportY(xa, xb);
-  const double lo = support.first, hi = support.second;
+                                     const Domain& cells, int i,
+                                     std::array<const Profile*, 2> ends) {
+  const CellBounds strip = stripOf(grid, cells, i);
+  const double lo = strip.y0, hi = strip.y1;
   std::vector<double> edges;
-  if (xb > xa && hi > lo) {
+  if (strip.x1 > strip.x0 && hi > lo) {
     const std::vector<OuterLeaf> outer = co_await tabulateRectangle(
-        f, features, grid, {xa, xb, lo, hi},
-        tabulationOptions(options, marginal.at(xb) - marginal.at(xa)), 0, leafShare(grid.ny));
+        f, features, grid, strip, stripOptions(options, marginal, strip), 0, leafShare(grid.ny));
     std::vector<std::pair<double, Knots>> parts;
+    auto add = [&](double weight, const Profile& p) {
+      std::vector<const QuadratureLeaf*> leaves;
+      for (const QuadratureLeaf& l : p.leaves) leaves.push_back(&l);
+      parts.emplace_back(weight, knotsOf(leaves, grid.ny));
+    };
+    for (const Profile* p : ends) add(0.0, *p);
     for (const OuterLeaf& o : outer) {
       const std::array<double, kRuleNodes> w = ruleWeights(o.leaf.a, o.leaf.b);
-      for (size_t k = 0; k < kRuleNodes; ++k) {
-        std::vector<const QuadratureLeaf*> leaves;
-        for (const QuadratureLeaf& l : o.profiles[k].leaves) leaves.push_back(&l);
-        parts.emplace_back(w[k], knotsOf(leaves, grid.ny));
-      }
+      for (size_t k = 0; k < kRuleNodes; ++k) add(w[k], o.profiles[k]);
     }
     const Cumulative conditional(piecesOf(parts, lo, hi));
     if (conditional.total() > 0) edges = equalMassEdges(conditional, lo, hi, grid.ny);
@@ -338,16 +368,22 @@ Task<std::vector<double>> stripEdges(Density& f, const Domain& grid,
   co_return edges;
 }
 
-// The marginal in one computation, then every strip.
+// The marginal in one computation, then the profiles at the strips' edges, then every strip.
 Task<Domain> cellsOf(Density& f, const Domain& grid, const DensityFeatures& features,
                      QuadratureOptions options) {
   const Cumulative marginal = co_await marginalOf(f, grid, features, options);
   if (auto d = withoutMass(grid, marginal)) co_return *d;
   Domain d = stripsOf(grid, marginal);
+  std::vector<Task<Profile>> atEdges;
+  atEdges.reserve(grid.nx + 1);
+  for (int k = 0; k <= grid.nx; ++k)
+    atEdges.push_back(edgeProfile(f, grid, features, options, marginal, d, k));
+  const std::vector<Profile> profiles = co_await f.all(std::move(atEdges), true);
   std::vector<Task<std::vector<double>>> strips;
   strips.reserve(grid.nx);
   for (int i = 0; i < grid.nx; ++i)
-    strips.push_back(stripEdges(f, grid, features, options, marginal, d, i));
+    strips.push_back(
+        stripEdges(f, grid, features, options, marginal, d, i, {&profiles[i], &profiles[i + 1]}));
   const std::vector<std::vector<double>> edges = co_await f.all(std::move(strips), true);
   for (int i = 0; i < grid.nx; ++i)
     std::copy(edges[i].begin(), edges[i].end(),

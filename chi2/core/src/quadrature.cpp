@@ -740,6 +740,13 @@ Task<std::vector<OuterLeaf>> tabulateRectangle(Density& f, const DensityFeatures
   co_return r;
 }
 
+Task<Profile> profileAlongY(Density& f, const DensityFeatures& features, const Domain& d,
+                            CellBounds b, QuadratureOptions options, double x) {
+  Nested spec = specFor(features, d, b, options, nullptr);
+  Profile p = co_await profileAt(f, spec, x);
+  co_return p;
+}
+
 std::array<double, kRuleNodes> ruleWeights(double a, double b) {
   const double scale = (b - a) / 2;
   const auto& wk = Kronrod::weights();

@@ -45,6 +45,11 @@ Task<std::vector<OuterLeaf>> tabulateRectangle(Density& f, const DensityFeatures
                                                const Domain& domain, CellBounds rectangle,
                                                QuadratureOptions options, double xShare,
                                                double yShare);
+// The profile along y at x, as the nested integral over `rectangle` would compute it there: so
+// that a tabulation's ends (x = rectangle.x0, x1), which its rule's nodes never reach, can be
+// seen.
+Task<Profile> profileAlongY(Density& f, const DensityFeatures& features, const Domain& domain,
+                            CellBounds rectangle, QuadratureOptions options, double x);
 // The rule's nodes' weights on [a, b], in the order of QuadratureLeaf::at.
 std::array<double, kRuleNodes> ruleWeights(double a, double b);
 // The integral from a to a + (b − a)·j/steps, j = 1 … steps, of the polynomial interpolating

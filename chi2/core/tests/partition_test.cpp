@@ -118,6 +118,37 @@ TEST(FrameworkPartition, ZeroRegionAtAnEndIsACellThatExpectsNothing) {
   expectNearlyEqual(probabilities(d, f, features), 8 + 7);
 }
 
+TEST(FrameworkPartition, AHorizonThatMovesAcrossAStripLeavesNoCellTakenForEmpty) {
+  // Zero below a horizon that is not declared (a BSDF's horizon in a rotated frame), which
+  // crosses y = 1/2 between the last of the rule's nodes in x (0.99573) and the strip's end:
+  // every node finds nothing below 1/2, the end finds mass in [0.49, 0.5], a piece of its
+  // profile (the pieces are cut at 0.49 and 0.5, as at a density's declared jumps). A cell
+  // that expects nothing must hold no mass anywhere, its edges included, or a sample there
+  // fails the test outright.
+  const auto horizon = [](double x) { return 0.5 + 0.1 * (0.9959 - x); };
+  const DensityFn f = [&](double x, double y) { return y > horizon(x) ? 1.0 : 0.0; };
+  const DensityFeatures features{[](double) { return std::vector<double>{0.49, 0.5}; }, {}, {}};
+  Domain one;  // the unit square as one strip of 8 cells
+  one.ny = 8;
+  const Domain d = equalProbabilityCells(one, f, features);
+  const std::vector<double> p = probabilities(d, f, features);
+  for (int j = 0; j < d.ny; ++j) {
+    if (p[j] > 0) continue;
+    // Across the strip, ends included, and towards each of the cell's y edges in steps that
+    // halve.
+    for (int u = 0; u <= 64; ++u)
+      for (int v = 1; v <= 80; ++v) {
+        const double x = static_cast<double>(u) / 64;
+        const double lo = d.yEdge(0, j), hi = d.yEdge(0, j + 1);
+        const double step = std::ldexp(hi - lo, -v / 2);
+        const double y = v % 2 ? lo + step : hi - step;
+        ASSERT_EQ(f(x, y), 0.0) << "cell " << j << " [" << lo << ", " << hi << "] at (" << x << ", "
+                                << y << ") expects nothing";
+      }
+  }
+  EXPECT_EQ(p[0], 0.0);  // below the horizon
+}
+
 TEST(FrameworkPartition, DiskAndTriangleSupportsAreCut) {
   const Domain disk = equalProbabilityCells(diskDomain(8), [](double, double) { return 1.0; });
   expectNearlyEqual(probabilities(disk, [](double, double) { return 1.0; }), 0);
