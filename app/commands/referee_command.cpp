@@ -37,7 +37,7 @@ constexpr int kStatusEquivalent = 0, kStatusDiffer = 1, kStatusInconclusive = 3;
 struct RefereeArgs {
   std::string a, b, baseline, saveBaseline, scene, rendererVersion, manifest;
   std::string json, junit, zImage, workDir, layer, spending = "pocock";
-  double margin = 0.01, alpha = 0.01, maxSeconds = 0;
+  double margin = 0.01, alpha = 0.01, maxSeconds = 0, renderTimeout = 0;
   int tile = 16, initialRenders = 4, maxRenders = 64, jobs = 2, spp = 0;
   uint64_t seed = 0;
 };
@@ -162,7 +162,9 @@ RefereeOutcome runEntry(const RefereeEntry& e, const RefereeArgs& args,
               {"renderer_version", args.rendererVersion}};
   const auto start = std::chrono::steady_clock::now();
   try {
-    ProcessRenderSource source({e.given.a, e.given.b}, args.jobs, workDir, e.spp);
+    ProcessRenderSource source(
+        {e.given.a, e.given.b}, args.jobs, workDir, e.spp,
+        args.renderTimeout > 0 ? std::optional(args.renderTimeout) : std::nullopt);
     if (e.given.b.empty()) {
       const TileMoments moments = renderBaselineSide(source, e.options);
       saveSide(e, moments, args);
@@ -365,7 +367,12 @@ void addRefereeCommand(CLI::App& app, const ProcessGroup& group) {
   cmd->add_option("--max-renders", args->maxRenders, "Renders per side at most")
       ->check(wholeNumber(2));
   cmd->add_option("--max-seconds", args->maxSeconds,
-                  "Start no round after this many seconds (0: no limit)")
+                  "The time budget: no round starts after it, and the renders still running "
+                  "at its end are stopped (INCONCLUSIVE; 0: no limit)")
+      ->check(realNumber(0, true));
+  cmd->add_option("--render-timeout", args->renderTimeout,
+                  "Seconds one render may take: one that runs longer is killed, with its "
+                  "process group, and is an error naming its command (exit 2; 0: no limit)")
       ->check(realNumber(0, true));
   cmd->add_option("--spending", args->spending,
                   "How the level is spent over the rounds: pocock or obrien-fleming (Lan and "

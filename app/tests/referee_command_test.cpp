@@ -84,6 +84,44 @@ TEST_F(RefereeCommand, CtrlCEndsWithoutADecisionAndLeavesNoRenders) {
   EXPECT_TRUE(std::filesystem::is_empty(tmp)) << "the renders' folder was left behind";
 }
 
+// A render that hangs ends the referee at its --render-timeout with exit status 2, naming the
+// command; the budget (--max-seconds) ends renders still running with INCONCLUSIVE (3). Both
+// leave neither the referee's folder of renders nor a process behind.
+TEST_F(RefereeCommand, HungRendersEndAtTheirLimitsAndLeaveNothingBehind) {
+  const std::filesystem::path tmp = dir_ / "tmp";  // the referee's temp folder (TMPDIR)
+  std::filesystem::create_directories(tmp);
+  const auto run = [&](std::vector<std::string> args) {
+    args.insert(args.begin(), {"/usr/bin/env", "TMPDIR=" + tmp.string(), VERITY_BINARY, "referee",
+                               "--tile", "4"});
+    const auto start = std::chrono::steady_clock::now();
+    const testing::Outcome o = testing::run(args);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 60);
+    EXPECT_TRUE(std::filesystem::is_empty(tmp)) << "the renders' folder was left behind";
+    return o;
+  };
+  const testing::Outcome hung =
+      run({"--a", fake(), "--b", "sleep 986.25; " + fake(), "--render-timeout", "1"});
+  EXPECT_EQ(hung.status, 2) << hung.stderrText;
+  EXPECT_NE(hung.stderrText.find("side B (seed 1) `sleep 986.25;"), std::string::npos)
+      << hung.stderrText;
+  EXPECT_NE(hung.stderrText.find("ran past --render-timeout 1 s"), std::string::npos)
+      << hung.stderrText;
+  const std::string json = path("budget.json");
+  const testing::Outcome budget =
+      run({"--a", "sleep 986.5; " + fake(), "--b", fake(), "--max-seconds", "1", "--json", json});
+  EXPECT_EQ(budget.status, 3) << budget.stderrText;
+  const nlohmann::json entry = nlohmann::json::parse(std::ifstream(json))["entries"][0];
+  EXPECT_EQ(entry["verdict"], "INCONCLUSIVE");
+  EXPECT_NE(entry["stop_reason"].get<std::string>().find("--max-seconds 1 reached during round 1"),
+            std::string::npos)
+      << entry.dump();
+  for (const auto& process : std::filesystem::directory_iterator("/proc")) {
+    std::ifstream file(process.path() / "cmdline", std::ios::binary);
+    const std::string cmdline((std::istreambuf_iterator<char>(file)), {});
+    EXPECT_EQ(cmdline.find("986."), std::string::npos) << "a render outlived the referee";
+  }
+}
+
 TEST_F(RefereeCommand, JsonCarriesTheRoundsAndTiles) {
   const std::string json = path("out/report.json");
   ASSERT_EQ(verity(referee({"--a", fake(), "--b", fake(" --bias 0.2"), "--json", json,

@@ -59,6 +59,18 @@ RoundLevels roundLevels(const RefereeOptions& options, int round) {
   return {level, level};
 }
 
+namespace {
+
+// When --max-seconds, counted from `start`, ends: the renders still running then are stopped.
+RenderDeadline budgetEnd(const RefereeOptions& options,
+                         std::chrono::steady_clock::time_point start) {
+  if (!(options.maxSeconds > 0)) return std::nullopt;
+  return start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                     std::chrono::duration<double>(options.maxSeconds));
+}
+
+}  // namespace
+
 RefereeResult referee(RenderSource& source, const RefereeOptions& options,
                       const TileMoments* baseline) {
   checkRefereeOptions(options);
@@ -71,6 +83,8 @@ RefereeResult referee(RenderSource& source, const RefereeOptions& options,
   const auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
+  // The budget stops the renders in flight at its end, not only the next round.
+  const RenderDeadline deadline = budgetEnd(options, start);
   RefereeResult r;
   r.a = baseline ? *baseline : TileMoments(options.tileSize);
   r.b = TileMoments(options.tileSize);
@@ -83,7 +97,16 @@ RefereeResult referee(RenderSource& source, const RefereeOptions& options,
       if (!baseline) requests.push_back({Side::A, renderSeed(options.seed, Side::A, i)});
       requests.push_back({Side::B, renderSeed(options.seed, Side::B, i)});
     }
-    const std::vector<Rendered> images = source.render(requests);
+    std::vector<Rendered> images;
+    try {
+      images = source.render(requests, deadline);
+    } catch (const RenderBudgetEnded& ended) {
+      r.stopReason = fmt::format(
+          "--max-seconds {} reached during round {} of {} ({}): {}", options.maxSeconds, round + 1,
+          r.plannedRounds, round == 0 ? "no round was complete" : "that round decides nothing",
+          ended.what());
+      break;
+    }
     for (size_t i = 0; i < images.size(); ++i)
       (requests[i].side == Side::A ? r.a : r.b)
           .add(images[i].image, images[i].label, options.layer);
@@ -113,6 +136,7 @@ RefereeResult referee(RenderSource& source, const RefereeOptions& options,
       break;
     }
   }
+  if (r.rounds.empty()) return r;  // stopped in the first round: nothing to compare
   // The last look's comparison again, with its power figures for the report.
   ComparisonOptions last = r.comparison.options;
   last.detectableBias = true;
@@ -135,9 +159,18 @@ TileMoments renderBaselineSide(RenderSource& source, const RefereeOptions& optio
   std::vector<RenderRequest> requests;
   for (int i = 0; i < options.maxRenders; ++i)
     requests.push_back({Side::A, renderSeed(options.seed, Side::A, i)});
+  const RenderDeadline deadline = budgetEnd(options, std::chrono::steady_clock::now());
+  std::vector<Rendered> images;
+  try {
+    images = source.render(requests, deadline);
+  } catch (const RenderBudgetEnded& ended) {
+    throw VerityError("", "--max-seconds",
+                      fmt::format("{} s passed before the baseline's {} renders were done, so "
+                                  "no baseline was saved: {}",
+                                  options.maxSeconds, options.maxRenders, ended.what()));
+  }
   TileMoments moments(options.tileSize);
-  for (const Rendered& image : source.render(requests))
-    moments.add(image.image, image.label, options.layer);
+  for (const Rendered& image : images) moments.add(image.image, image.label, options.layer);
   return moments;
 }
 

@@ -43,11 +43,11 @@ nlohmann::json refereeJson(const RefereeResult& r, const RefereeOptions& o) {
                       {"renders_a", r.rounds.empty() ? 0 : r.rounds.back().rendersA},
                       {"renders_b", r.rounds.empty() ? 0 : r.rounds.back().rendersB},
                       {"seconds", r.rounds.empty() ? 0.0 : r.rounds.back().seconds}};
+  if (r.verdict == Verdict::Undecided) j["stop_reason"] = r.stopReason;
   if (r.rounds.empty()) return j;
   j["comparison"] = comparisonJson(r.comparison);
   j["equivalence"] = equivalenceJson(r.comparison, r.rounds.back().decision, o.margin);
   if (r.verdict == Verdict::Undecided) {
-    j["stop_reason"] = r.stopReason;
     j["claimable_margin"] = marginJson(r.claimableMargin);
     nlohmann::json undecided = nlohmann::json::array();
     for (size_t i : r.undecided)
@@ -79,7 +79,9 @@ std::string refereeSummary(const RefereeResult& r, const RefereeOptions& o) {
                          testName(r.comparison.tests[i]), r.comparison.tests[i].pooled.a.mean,
                          r.comparison.tests[i].pooled.b.mean,
                          r.comparison.tests[i].relativeDifference);
-  } else if (r.verdict == Verdict::Undecided && !r.rounds.empty()) {
+  } else if (r.verdict == Verdict::Undecided && r.rounds.empty()) {
+    s += fmt::format("  {}\n", r.stopReason);
+  } else if (r.verdict == Verdict::Undecided) {
     s += fmt::format("  {}; {} tests undecided:", r.stopReason, r.undecided.size());
     for (size_t k = 0; k < std::min<size_t>(r.undecided.size(), 8); ++k)
       s += " " + testName(r.comparison.tests[r.undecided[k]]) + ",";

@@ -3,7 +3,9 @@
 // fake renderer program writes, so that hundreds of refereed decisions take seconds.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -31,12 +33,24 @@ class RendersInterrupted : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Thrown by a source when the time budget (--max-seconds) ended while renders were running:
+// they were stopped, and the round they belonged to decides nothing.
+class RenderBudgetEnded : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// When the renders in flight must be stopped; none: no limit.
+using RenderDeadline = std::optional<std::chrono::steady_clock::time_point>;
+
 class RenderSource {
  public:
   virtual ~RenderSource() = default;
   // One image per request, in the requests' order. Throws VerityError when a render fails,
-  // RendersInterrupted when the user interrupted them.
-  virtual std::vector<Rendered> render(const std::vector<RenderRequest>& requests) = 0;
+  // RendersInterrupted when the user interrupted them, RenderBudgetEnded when `deadline`
+  // passed before they were done.
+  virtual std::vector<Rendered> render(const std::vector<RenderRequest>& requests,
+                                       RenderDeadline deadline) = 0;
 };
 
 }  // namespace verity::validation

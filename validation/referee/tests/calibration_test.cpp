@@ -101,7 +101,7 @@ int anyLookEquivalent(const Case& c) {
       for (int i = b.renders(); i < schedule[round]; ++i)
         for (Side side : {Side::A, Side::B})
           requests.push_back({side, renderSeed(runSeed(c, run), side, i)});
-      const std::vector<Rendered> images = source.render(requests);
+      const std::vector<Rendered> images = source.render(requests, std::nullopt);
       for (size_t i = 0; i < images.size(); ++i)
         (requests[i].side == Side::A ? a : b).add(images[i].image, images[i].label);
       const RoundLevels levels = roundLevels(options, round);

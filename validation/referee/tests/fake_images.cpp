@@ -36,7 +36,8 @@ ImageChannels fakeRender(const FakeScene& scene, uint64_t seed) {
   return image;
 }
 
-std::vector<Rendered> FakeRenderSource::render(const std::vector<RenderRequest>& requests) {
+std::vector<Rendered> FakeRenderSource::render(const std::vector<RenderRequest>& requests,
+                                               RenderDeadline) {
   std::vector<Rendered> out;
   for (const RenderRequest& r : requests)
     out.push_back({fakeRender(r.side == Side::A ? a_ : b_, r.seed),

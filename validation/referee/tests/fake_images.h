@@ -34,7 +34,9 @@ ImageChannels fakeRender(const FakeScene& scene, uint64_t seed);
 class FakeRenderSource : public RenderSource {
  public:
   FakeRenderSource(FakeScene a, FakeScene b) : a_(a), b_(b) {}
-  std::vector<Rendered> render(const std::vector<RenderRequest>& requests) override;
+  // In the process at once: no deadline can pass.
+  std::vector<Rendered> render(const std::vector<RenderRequest>& requests,
+                               RenderDeadline deadline) override;
 
  private:
   FakeScene a_, b_;

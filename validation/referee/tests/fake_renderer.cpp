@@ -2,11 +2,14 @@
 // through command templates.
 //   fake_renderer --seed S --out FILE [--bias B] [--biased-tiles N] [--biased-channels N]
 //                 [--heavy] [--noise SD]
-//                 [--size W H] [--no-rgb] [--fail]
-// --no-rgb writes a channel Y only; --fail prints to stderr and exits with status 7.
+//                 [--size W H] [--no-rgb] [--fail] [--crash] [--half]
+// --no-rgb writes a channel Y only; --fail prints to stderr and exits with status 7; --crash
+// aborts (SIGABRT) after a line on stderr; --half leaves the EXR cut to half its length, as a
+// render killed while writing would.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <string>
 
 #include "validation/referee/tests/fake_images.h"
@@ -15,7 +18,7 @@ int main(int argc, char** argv) {
   verity::validation::testing::FakeScene scene;
   unsigned long long seed = 0;
   std::string out;
-  bool rgb = true;
+  bool rgb = true, half = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const auto next = [&] { return i + 1 < argc ? argv[++i] : ""; };
@@ -38,7 +41,12 @@ int main(int argc, char** argv) {
       scene.height = std::atoi(next());
     } else if (arg == "--no-rgb")
       rgb = false;
-    else if (arg == "--fail") {
+    else if (arg == "--half")
+      half = true;
+    else if (arg == "--crash") {
+      std::fprintf(stderr, "fake renderer: crashing as asked\n");
+      std::abort();
+    } else if (arg == "--fail") {
       std::fprintf(stderr, "fake renderer: failing as asked\n");
       return 7;
     } else {
@@ -58,5 +66,6 @@ int main(int argc, char** argv) {
     image.planes.erase("B");
   }
   verity::writeExr(out, image);
+  if (half) std::filesystem::resize_file(out, std::filesystem::file_size(out) / 2);
   return 0;
 }

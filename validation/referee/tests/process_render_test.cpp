@@ -1,10 +1,14 @@
 // The referee through command templates: the fake renderer program (fake_renderer.cpp) run as
 // processes, in parallel. Its images equal those made in the process for the same seeds, so
 // the calibrations of calibration_test.cpp hold for this path; and its failures are errors
-// naming the command and showing its stderr, or the file.
+// naming the command and showing its stderr, or the file. Renders that hang, crash or write
+// half a file end within their limits, and leave no process behind.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "validation/referee/process_render_source.h"
 #include "validation/referee/referee.h"
@@ -36,6 +40,21 @@ class ProcessRender : public ::testing::Test {
   }
   std::filesystem::path dir_;
 };
+
+// Whether a process whose command line holds `marker` is running (or a zombie not yet
+// reaped): read from /proc.
+bool running(const std::string& marker) {
+  for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
+    std::ifstream file(entry.path() / "cmdline", std::ios::binary);
+    const std::string cmdline((std::istreambuf_iterator<char>(file)), {});
+    if (cmdline.find(marker) != std::string::npos) return true;
+  }
+  return false;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 TEST_F(ProcessRender, DecidesLikeTheSameRoundsInTheProcess) {
   RefereeOptions options;
@@ -86,6 +105,63 @@ TEST_F(ProcessRender, OutputsOfAnotherSizeOrWithoutRgbNameTheFile) {
   ProcessRenderSource grey({fake(), fake(" --no-rgb")}, 2, dir_, std::nullopt);
   error = errorOf(grey, options);
   EXPECT_NE(error.find(".exr: the image has no R, G and B"), std::string::npos) << error;
+}
+
+// A render that hangs (a shell waiting on a child) is killed with its process group once past
+// its timeout, and the error names the command, its side and seed; the render of the other
+// side in flight is stopped too. "sleep 987.25" marks the processes to look for.
+TEST_F(ProcessRender, AHungRenderIsKilledWithItsGroupAndNamed) {
+  ProcessRenderSource source({fake(), "sleep 987.25; " + fake()}, 2, dir_, std::nullopt, 1.0);
+  const auto start = std::chrono::steady_clock::now();
+  const std::string error = errorOf(source, {});
+  EXPECT_LT(secondsSince(start), 30) << "the limit of 1 s per render did not hold";
+  EXPECT_NE(error.find("side B (seed 1)"), std::string::npos) << error;
+  EXPECT_NE(error.find("sleep 987.25"), std::string::npos) << error;
+  EXPECT_NE(error.find("ran past --render-timeout 1 s and was killed"), std::string::npos) << error;
+  EXPECT_FALSE(running("987.25")) << "the hung render's sleep outlived the referee";
+}
+
+// The budget ends the renders still running at its end: no decision (INCONCLUSIVE, with the
+// reason), nothing left running.
+TEST_F(ProcessRender, TheBudgetStopsTheRendersInFlight) {
+  ProcessRenderSource source({"sleep 987.5; " + fake(), fake()}, 2, dir_, std::nullopt);
+  RefereeOptions options;
+  options.maxSeconds = 1;
+  const auto start = std::chrono::steady_clock::now();
+  const RefereeResult r = referee(source, options);
+  EXPECT_LT(secondsSince(start), 30) << "--max-seconds 1 did not end the renders";
+  EXPECT_EQ(r.verdictName(), "INCONCLUSIVE");
+  EXPECT_TRUE(r.rounds.empty());
+  EXPECT_NE(r.stopReason.find("--max-seconds 1 reached during round 1"), std::string::npos)
+      << r.stopReason;
+  EXPECT_NE(r.stopReason.find("sleep 987.5"), std::string::npos) << r.stopReason;
+  EXPECT_FALSE(running("987.5")) << "a render outlived the budget";
+}
+
+// One render that fails stops the others in flight rather than waiting for them.
+TEST_F(ProcessRender, AFailureStopsTheOtherRendersInFlight) {
+  ProcessRenderSource source({"sleep 987.75; " + fake(), fake(" --fail")}, 2, dir_, std::nullopt);
+  const auto start = std::chrono::steady_clock::now();
+  const std::string error = errorOf(source, {});
+  EXPECT_LT(secondsSince(start), 30);
+  EXPECT_NE(error.find("exited with status 7"), std::string::npos) << error;
+  EXPECT_FALSE(running("987.75"));
+}
+
+TEST_F(ProcessRender, ACrashIsNamedWithItsSignal) {
+  ProcessRenderSource source({fake(), fake(" --crash")}, 2, dir_, std::nullopt);
+  const std::string error = errorOf(source, {});
+  EXPECT_NE(error.find("side B"), std::string::npos) << error;
+  EXPECT_NE(error.find("ended by signal 6 (Aborted)"), std::string::npos) << error;
+  EXPECT_NE(error.find("fake renderer: crashing as asked"), std::string::npos) << error;
+}
+
+TEST_F(ProcessRender, AHalfWrittenImageNamesTheCommand) {
+  ProcessRenderSource source({fake(), fake(" --half")}, 2, dir_, std::nullopt);
+  const std::string error = errorOf(source, {});
+  EXPECT_NE(error.find("side B (seed 1)"), std::string::npos) << error;
+  EXPECT_NE(error.find("--half"), std::string::npos) << error;
+  EXPECT_NE(error.find("wrote an image that cannot be read"), std::string::npos) << error;
 }
 
 }  // namespace
