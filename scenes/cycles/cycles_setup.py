@@ -40,11 +40,15 @@ def options(script, description):
     parser.add_argument("--caustics", choices=["on", "off"], default="on",
                         help="reflective and refractive caustics")
     parser.add_argument("--max-bounces", type=int, default=12, help="max_bounces")
+    parser.add_argument("--emission-scale", type=float, default=1.0,
+                        help="every light's strength times this (1.01: a change of 1%%)")
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     args = parser.parse_args(argv)
     for name in ("spp", "threads", "width", "height", "max_bounces"):
         if getattr(args, name) < 1:
             parser.error(f"--{name.replace('_', '-')} must be at least 1, not {getattr(args, name)}")
+    if not args.emission_scale > 0:
+        parser.error(f"--emission-scale must be positive, not {args.emission_scale}")
     if args.seed < 0:
         parser.error(f"--seed must be at least 0, not {args.seed}")
     return args

@@ -32,7 +32,7 @@ wall((1, 0, 1), (0, -half, 0), green)         # right
 
 # The light: a small emitting square just below the ceiling, facing down.
 bpy.ops.mesh.primitive_plane_add(size=0.5, location=(0, 0, 1.98), rotation=(math.pi, 0, 0))
-setup.with_material(bpy.context.object, setup.emission("light", 40.0))
+setup.with_material(bpy.context.object, setup.emission("light", 40.0 * args.emission_scale))
 
 bpy.ops.mesh.primitive_uv_sphere_add(radius=0.35, location=(-0.4, 0.3, 0.35), segments=48,
                                      ring_count=24)

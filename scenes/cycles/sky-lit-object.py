@@ -32,7 +32,7 @@ sky.sun_direction = (math.cos(math.radians(35)) * 0.6, math.cos(math.radians(35)
                      math.sin(math.radians(35)))
 sky.turbidity = 3.0
 world.node_tree.links.new(sky.outputs["Color"], nodes["Background"].inputs["Color"])
-nodes["Background"].inputs["Strength"].default_value = 2.0
+nodes["Background"].inputs["Strength"].default_value = 2.0 * args.emission_scale
 bpy.context.scene.world = world
 
 setup.camera(location=(0, -4.2, 1.6), rotation=(math.radians(75), 0, 0), lens=35)

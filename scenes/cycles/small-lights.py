@@ -29,7 +29,7 @@ setup.with_material(bpy.context.object,
 for (x, y, z), color in (((-1.2, -0.5, 1.4), (1, 0.2, 0.2)), ((0, -0.9, 1.9), (0.2, 1, 0.2)),
                          ((1.2, -0.3, 1.2), (0.2, 0.2, 1))):
     light = bpy.data.lights.new("point", "POINT")
-    light.energy = 60
+    light.energy = 60 * args.emission_scale
     light.shadow_soft_size = 0.01
     light.color = color
     obj = bpy.data.objects.new("point", light)
