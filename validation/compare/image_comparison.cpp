@@ -33,7 +33,10 @@ using FileAttributes = std::vector<std::pair<std::string, std::map<std::string, 
 void addWarnings(const FileAttributes& files, ComparisonResult& r) {
   std::map<std::string, std::string> seen;  // seed → first file with it
   std::map<std::string, std::string> bounces, scenes;
-  for (const auto& [file, attributes] : files) {
+  for (const auto& entry : files) {
+    // Named, not a structured binding: clang before 16 cannot capture those in a lambda.
+    const std::string& file = entry.first;
+    const std::map<std::string, std::string>& attributes = entry.second;
     const auto get = [&](const char* key) {
       const auto it = attributes.find(key);
       return it == attributes.end() ? std::string() : it->second;
