@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <optional>
 
@@ -47,6 +48,7 @@ struct RefereeEntry {
   ManifestEntry given;
   RefereeOptions options;
   std::optional<int> spp;
+  std::optional<double> renderTimeout;  // seconds per render; none: no limit
   std::optional<Baseline> baseline;
   std::string scene;  // --scene, or else the command template of the side it names
   std::filesystem::path zImage;
@@ -99,6 +101,12 @@ RefereeEntry prepareEntry(const ManifestEntry& given, const RefereeArgs& args, b
     throw VerityError("", "--spending", error.what());
   }
   checkRefereeOptions(o);
+  const double timeout = given.renderTimeout.value_or(args.renderTimeout);
+  if (!(timeout >= 0) || !std::isfinite(timeout))
+    throw VerityError(
+        "", inManifest && given.renderTimeout ? "budget/render_timeout" : "--render-timeout",
+        fmt::format("must be a time of at least 0 seconds (0: no limit), not {}", timeout));
+  if (timeout > 0) e.renderTimeout = timeout;
   if (given.spp)
     e.spp = given.spp;
   else if (args.spp > 0)
@@ -162,9 +170,7 @@ RefereeOutcome runEntry(const RefereeEntry& e, const RefereeArgs& args,
               {"renderer_version", args.rendererVersion}};
   const auto start = std::chrono::steady_clock::now();
   try {
-    ProcessRenderSource source(
-        {e.given.a, e.given.b}, args.jobs, workDir, e.spp,
-        args.renderTimeout > 0 ? std::optional(args.renderTimeout) : std::nullopt);
+    ProcessRenderSource source({e.given.a, e.given.b}, args.jobs, workDir, e.spp, e.renderTimeout);
     if (e.given.b.empty()) {
       const TileMoments moments = renderBaselineSide(source, e.options);
       saveSide(e, moments, args);

@@ -104,8 +104,28 @@ TEST_F(RefereeCommand, HungRendersEndAtTheirLimitsAndLeaveNothingBehind) {
   EXPECT_EQ(hung.status, 2) << hung.stderrText;
   EXPECT_NE(hung.stderrText.find("side B (seed 1) `sleep 986.25;"), std::string::npos)
       << hung.stderrText;
-  EXPECT_NE(hung.stderrText.find("ran past --render-timeout 1 s"), std::string::npos)
+  EXPECT_NE(hung.stderrText.find("ran past its limit of 1 s per render"), std::string::npos)
       << hung.stderrText;
+  // The same limit from a manifest entry's budget, and a bad one refused before any render.
+  const std::string manifest = path("suite.json");
+  const auto writeManifest = [&](const std::string& timeout) {
+    std::ofstream(manifest) << nlohmann::json{
+        {"entries",
+         {{{"name", "hung"},
+           {"a", fake()},
+           {"b", "sleep 986.75; " + fake()},
+           {"budget", {{"render_timeout", nlohmann::json::parse(timeout)}}}}}}};
+  };
+  writeManifest("1");
+  const testing::Outcome fromManifest = run({"--manifest", manifest});
+  EXPECT_EQ(fromManifest.status, 2) << fromManifest.stderrText;
+  EXPECT_NE(fromManifest.stderrText.find("ran past its limit of 1 s per render"), std::string::npos)
+      << fromManifest.stderrText;
+  writeManifest("-1");
+  const testing::Outcome refused = run({"--manifest", manifest});
+  EXPECT_EQ(refused.status, 2) << refused.stderrText;
+  EXPECT_NE(refused.stderrText.find("budget/render_timeout"), std::string::npos)
+      << refused.stderrText;
   const std::string json = path("budget.json");
   const testing::Outcome budget =
       run({"--a", "sleep 986.5; " + fake(), "--b", fake(), "--max-seconds", "1", "--json", json});

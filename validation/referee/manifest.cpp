@@ -20,7 +20,7 @@ void onlyKeys(const nlohmann::json& node, const std::set<std::string>& keys,
       throw VerityError(file, path + key,
                         fmt::format("unknown key; an entry knows name, scene, a, b, baseline, "
                                     "save_baseline, margin, spp and budget (initial_renders, "
-                                    "max_renders, max_seconds)"));
+                                    "max_renders, max_seconds, render_timeout)"));
 }
 
 }  // namespace
@@ -71,7 +71,8 @@ std::vector<ManifestEntry> loadManifest(const std::filesystem::path& file) {
         const nlohmann::json& budget = e["budget"];
         key = "budget";
         if (!budget.is_object()) throw VerityError(name, path + "budget", "must be an object");
-        onlyKeys(budget, {"initial_renders", "max_renders", "max_seconds"}, name, path + "budget/");
+        onlyKeys(budget, {"initial_renders", "max_renders", "max_seconds", "render_timeout"}, name,
+                 path + "budget/");
         key = "budget/initial_renders";
         if (budget.contains("initial_renders"))
           entry.initialRenders = budget["initial_renders"].get<int>();
@@ -79,6 +80,9 @@ std::vector<ManifestEntry> loadManifest(const std::filesystem::path& file) {
         if (budget.contains("max_renders")) entry.maxRenders = budget["max_renders"].get<int>();
         key = "budget/max_seconds";
         if (budget.contains("max_seconds")) entry.maxSeconds = budget["max_seconds"].get<double>();
+        key = "budget/render_timeout";
+        if (budget.contains("render_timeout"))
+          entry.renderTimeout = budget["render_timeout"].get<double>();
       }
       entries.push_back(std::move(entry));
     } catch (const nlohmann::json::exception& error) {

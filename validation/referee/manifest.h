@@ -6,7 +6,8 @@
 //                 "save_baseline": "FILE",              optional, with "a"
 //                 "margin": 0.01,                       optional: --margin otherwise
 //                 "spp": 16,                            optional: --spp otherwise
-//                 "budget": {"initial_renders": 4, "max_renders": 64, "max_seconds": 120}},
+//                 "budget": {"initial_renders": 4, "max_renders": 64, "max_seconds": 120,
+//                            "render_timeout": 60}},
 //                                                       optional, each: the option otherwise
 //                ...]}
 // Unknown keys are refused, so that a misspelt budget is not silently the default.
@@ -22,7 +23,7 @@ namespace verity::validation {
 struct ManifestEntry {
   std::string name, scene, a, b;
   std::filesystem::path baseline, saveBaseline;  // empty when not given
-  std::optional<double> margin, maxSeconds;
+  std::optional<double> margin, maxSeconds, renderTimeout;
   std::optional<int> spp, initialRenders, maxRenders;
 };
 

@@ -154,7 +154,8 @@ std::optional<Rendered> ProcessRenderSource::renderOne(const RenderRequest& requ
   std::string failure;
   if (ended == Ended::TimedOut)
     failure = fmt::format(
-        "ran past --render-timeout {} s and was killed, with its process group, after {:.1f} s",
+        "ran past its limit of {} s per render (--render-timeout) and was killed, with its "
+        "process group, after {:.1f} s",
         *renderTimeout_, seconds);
   else if (WIFSIGNALED(status))
     failure =
