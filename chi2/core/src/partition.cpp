@@ -269,14 +269,12 @@ namespace {
 Task<Cumulative> marginalOf(Density& f, const Domain& grid, const DensityFeatures& features,
                             const QuadratureOptions& options) {
   const CellBounds all{grid.x0, grid.x1, grid.y0, grid.y1};
-  QuadratureOptions pilot = tabulationOptions(options, 0);
-  pilot.maxDepth = 0;
-  const CellIntegral estimate = co_await rectangleIntegral(f, features, grid, all, pilot);
   DensityFeatures cut = features;
   const int first = static_cast<int>(std::ceil(kSplit * grid.nx / kLeafSteps));
   for (int k = 1; k < first; ++k) cut.breaksX.push_back(grid.x0 + (grid.x1 - grid.x0) * k / first);
-  const std::vector<OuterLeaf> outer = co_await tabulateRectangle(
-      f, cut, grid, all, tabulationOptions(options, estimate.value), leafShare(grid.nx), 0);
+  const std::vector<OuterLeaf> outer = co_await tabulateRectangleToItsMass(
+      f, cut, grid, all, [options](double mass) { return tabulationOptions(options, mass); },
+      leafShare(grid.nx), 0);
   std::vector<const QuadratureLeaf*> leaves;
   for (const OuterLeaf& o : outer) leaves.push_back(&o.leaf);
   co_return Cumulative(piecesOf({{1.0, knotsOf(leaves, grid.nx)}}, grid.x0, grid.x1));

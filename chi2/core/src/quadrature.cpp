@@ -26,6 +26,7 @@ constexpr size_t kNodes = kRuleNodes;
 // quadrature, and that integral's own error estimate.
 struct Sample {
   double value = 0, error = 0;
+  double noise = 0;  // the part of `error` that round-off noise makes (Errors)
 };
 using Nodes = std::array<double, kNodes>;
 
@@ -38,6 +39,7 @@ using Nodes = std::array<double, kNodes>;
 // a nested integral, ∫ |inner error| dx over the piece.
 struct Rule {
   double value = 0, error = 0, carried = 0;
+  double carriedNoise = 0;  // the part of `carried` that is its integrand's noise
 };
 
 // The rule's abscissae on [a, b] in the order it sums them: the centre, ± each Gauss node
@@ -69,21 +71,25 @@ Rule kronrodRule(const At& at, double a, double b) {
   size_t n = 0;
   const Sample centre = at(n++);
   double k = centre.value * wk[0], g = centre.value * wg[0], c = centre.error * wk[0];
+  double cn = centre.noise * wk[0];
   for (unsigned i = 2; i < x.size(); i += 2, n += 2) {
     const Sample p = at(n), m = at(n + 1);
     k += (p.value + m.value) * wk[i];
     g += (p.value + m.value) * wg[i / 2];
     c += (p.error + m.error) * wk[i];
+    cn += (p.noise + m.noise) * wk[i];
   }
   for (unsigned i = 1; i < x.size(); i += 2, n += 2) {
     const Sample p = at(n), m = at(n + 1);
     k += (p.value + m.value) * wk[i];
     c += (p.error + m.error) * wk[i];
+    cn += (p.noise + m.noise) * wk[i];
   }
   Rule r;
   r.value = scale * k;
   r.error = std::max(std::fabs(k - g), std::fabs(k * std::numeric_limits<double>::epsilon() * 2));
   r.carried = scale * c;
+  r.carriedNoise = scale * cn;
   return r;
 }
 
@@ -114,9 +120,19 @@ struct ProfileRule : Rule {
 };
 
 // Where a 1D integral's error lies: its own rule's estimates and the error its integrand
-// carried (both in the integral's units).
+// carried (both in the integral's units), which add; and the round-off noise of its own
+// pieces accepted as such (Part::noise), squared: the errors of different pieces along one
+// line are independent draws of the staircase's rounding, of either sign, so they add in
+// quadrature (`total`). The errors that inner integrals carry into the outer one are added
+// as they are: at nearby x the steps along y lie alike (a density of separate factors in x
+// and y repeats them exactly), so their errors need not be independent.
 struct Errors {
-  double rule = 0, carried = 0;
+  double rule = 0, carried = 0, noise2 = 0;
+  double carriedNoise = 0;  // the part of `carried` that is the integrand's noise
+
+  double total() const { return rule + carried + std::sqrt(noise2); }
+  // The part of total() that round-off noise makes, here or in the integrand.
+  double noise() const { return carriedNoise + std::sqrt(noise2); }
 };
 
 // A piece's integral and where its error lies: what an adaptive integral returns, from its
@@ -126,14 +142,17 @@ struct Part {
   Errors errors;
 
   static Part leaf(const Rule& r, double a, double b) {
-    return {r.value, {r.error * (b - a) / 2, r.carried}};
+    return {r.value, {r.error * (b - a) / 2, r.carried, 0, r.carriedNoise}};
   }
   static Part noise(const Rule& r0, const Rule& r1, double a, double b) {
-    return {r0.value + r1.value, {(r0.error + r1.error) * (b - a) / 4, r0.carried + r1.carried}};
+    const double e = (r0.error + r1.error) * (b - a) / 4;
+    return {r0.value + r1.value,
+            {0, r0.carried + r1.carried, e * e, r0.carriedNoise + r1.carriedNoise}};
   }
   static Part sum(const Part& p, const Part& q) {
     return {p.value + q.value,
-            {p.errors.rule + q.errors.rule, p.errors.carried + q.errors.carried}};
+            {p.errors.rule + q.errors.rule, p.errors.carried + q.errors.carried,
+             p.errors.noise2 + q.errors.noise2, p.errors.carriedNoise + q.errors.carriedNoise}};
   }
 };
 
@@ -165,16 +184,21 @@ struct Leaves {
 template <class R>
 using ResultOf = std::conditional_t<std::is_same_v<R, Rule>, Part, Leaves<R>>;
 
-// The rules a cell's integrals computed along y, by their x and piece: its pilot estimate, its
-// coarse level and its verifying level start from the same pieces, whose densities are then
-// evaluated once (half the points of a smooth lobe's grid). Used by one computation at a time.
+// The rules a computation took along y, with their nodes' values, by their x and piece: a
+// cell's pilot estimate, its coarse level and its verifying level start from the same pieces,
+// and so do a tabulation and the pilot that set its tolerances, whose densities are then
+// evaluated once (half the points of a smooth lobe's grid). Kept by one computation at a time;
+// once frozen, read by any number at once.
 class RuleMemo {
  public:
-  const Rule* find(double x, double a, double b) const {
+  const NodeRule* find(double x, double a, double b) const {
     const auto it = rules_.find(key(x, a, b));
     return it == rules_.end() ? nullptr : &it->second;
   }
-  void keep(double x, double a, double b, const Rule& r) { rules_.emplace(key(x, a, b), r); }
+  void keep(double x, double a, double b, const NodeRule& r) {
+    if (!frozen_) rules_.emplace(key(x, a, b), r);
+  }
+  void freeze() { frozen_ = true; }
 
  private:
   using Key = std::array<uint64_t, 3>;
@@ -188,7 +212,8 @@ class RuleMemo {
   static Key key(double x, double a, double b) {
     return {std::bit_cast<uint64_t>(x), std::bit_cast<uint64_t>(a), std::bit_cast<uint64_t>(b)};
   }
-  std::unordered_map<Key, Rule, Hash> rules_;
+  std::unordered_map<Key, NodeRule, Hash> rules_;
+  bool frozen_ = false;
 };
 
 // The density along y at one x, the inner integrals' integrand. Its rules are awaiters, not
@@ -218,16 +243,15 @@ struct AlongYOf {
       return along.density.at(points.data(), values.data(), points.size());
     }
     bool await_ready() {
-      if constexpr (std::is_same_v<R, Rule>)
-        if (along.memo) {
-          remembered = true;
-          for (size_t k = 0; k < Rules && remembered; ++k)
-            if (const Rule* r = along.memo->find(along.x, ends[k], ends[k + 1]))
-              rules[k] = *r;
-            else
-              remembered = false;
-          if (remembered) return true;
-        }
+      if (along.memo) {
+        remembered = true;
+        for (size_t k = 0; k < Rules && remembered; ++k)
+          if (const NodeRule* r = along.memo->find(along.x, ends[k], ends[k + 1]))
+            rules[k] = static_cast<const R&>(*r);
+          else
+            remembered = false;
+        if (remembered) return true;
+      }
       return request().await_ready();
     }
     void await_suspend(std::coroutine_handle<> waiting) {
@@ -235,17 +259,13 @@ struct AlongYOf {
     }
     std::array<R, Rules> await_resume() {
       if (remembered) return rules;
-      if constexpr (std::is_same_v<R, Rule>) {
-        rules = rulesFrom<Rules>(ends, [&](size_t i) { return Sample{values[i], 0}; });
-        if (along.memo)
-          for (size_t k = 0; k < Rules; ++k)
-            along.memo->keep(along.x, ends[k], ends[k + 1], rules[k]);
-      } else {
-        const auto plain = rulesFrom<Rules>(ends, [&](size_t i) { return Sample{values[i], 0}; });
-        for (size_t k = 0; k < Rules; ++k) {
-          static_cast<Rule&>(rules[k]) = plain[k];
-          std::copy_n(values.begin() + k * kNodes, kNodes, rules[k].at.begin());
-        }
+      const auto plain = rulesFrom<Rules>(ends, [&](size_t i) { return Sample{values[i], 0}; });
+      for (size_t k = 0; k < Rules; ++k) {
+        NodeRule r;
+        static_cast<Rule&>(r) = plain[k];
+        std::copy_n(values.begin() + k * kNodes, kNodes, r.at.begin());
+        if (along.memo) along.memo->keep(along.x, ends[k], ends[k + 1], r);
+        rules[k] = static_cast<const R&>(r);
       }
       return rules;
     }
@@ -336,7 +356,7 @@ double integrate1D(const std::function<double(double)>& f, double a, double b,
   Density d(alongY);
   const AlongY integrand{d, 0};
   const Part p = d.run(adaptive(d, integrand, a, b, options, absTolerance));
-  if (error) *error = p.errors.rule;
+  if (error) *error = p.errors.total();
   return p.value;
 }
 
@@ -416,7 +436,8 @@ Task<Sample> innerIntegral(Density& d, const Nested& spec, double x) {
   Sample s;
   auto add = [&](const Part& p) {
     s.value += p.value;
-    s.error += p.errors.rule;
+    s.error += p.errors.total();
+    s.noise += p.errors.noise();
   };
   if (ys.size() == 2) {  // one piece, the common case: awaited without the vectors
     add(co_await piece(0));
@@ -475,10 +496,16 @@ Task<CellIntegral> nested(Density& d, Nested spec) {
                  spec.options.cellAbsTolerance * (xs[k + 1] - xs[k]) / (spec.x1 - spec.x0)));
   const std::vector<Part> done = co_await d.all(std::move(parts));
   CellIntegral result;
+  Errors errors;
   for (const Part& p : done) {
     result.value += p.value;
-    result.error += p.errors.rule + p.errors.carried;
+    errors.rule += p.errors.rule;
+    errors.carried += p.errors.carried;
+    errors.noise2 += p.errors.noise2;
+    errors.carriedNoise += p.errors.carriedNoise;
   }
+  result.error = errors.total();
+  result.noise = errors.noise();
   co_return result;
 }
 
@@ -557,7 +584,7 @@ Task<Profile> profileAt(Density& d, const Nested& spec, double x) {
   p.x = x;
   const std::vector<double> ys = innerPieces(spec, x);
   if (ys.empty()) co_return p;
-  const AlongYOf<NodeRule> along{d, x};
+  const AlongYOf<NodeRule> along{d, x, spec.memo};
   std::vector<Task<Leaves<NodeRule>>> parts;
   parts.reserve(ys.size() - 1);
   for (size_t k = 0; k + 1 < ys.size(); ++k)
@@ -566,7 +593,7 @@ Task<Profile> profileAt(Density& d, const Nested& spec, double x) {
   std::vector<Leaves<NodeRule>> done = co_await d.all(std::move(parts));
   for (Leaves<NodeRule>& l : done) {
     p.value += l.part.value;
-    p.error += l.part.errors.rule;
+    p.error += l.part.errors.total();
     std::move(l.kept.begin(), l.kept.end(), std::back_inserter(p.leaves));
   }
   co_return p;
@@ -725,17 +752,24 @@ const Eigen::Matrix<double, kLeafSteps, kNodes>& cumulativeWeights() {
 
 }  // namespace
 
-Task<CellIntegral> rectangleIntegral(Density& f, const DensityFeatures& features, const Domain& d,
-                                     CellBounds b, QuadratureOptions options) {
-  const CellIntegral r = co_await rectangle(f, features, d, b, options, nullptr);
-  co_return r;
-}
-
 Task<std::vector<OuterLeaf>> tabulateRectangle(Density& f, const DensityFeatures& features,
                                                const Domain& d, CellBounds b,
                                                QuadratureOptions options, double xShare,
                                                double yShare) {
   Nested spec = specFor(features, d, b, options, nullptr);
+  std::vector<OuterLeaf> r = co_await tabulate(f, std::move(spec), xShare, yShare);
+  co_return r;
+}
+
+Task<std::vector<OuterLeaf>> tabulateRectangleToItsMass(
+    Density& f, const DensityFeatures& features, const Domain& d, CellBounds b,
+    std::function<QuadratureOptions(double mass)> options, double xShare, double yShare) {
+  RuleMemo memo;
+  QuadratureOptions pilot = options(0);
+  pilot.maxDepth = 0;
+  const CellIntegral estimate = co_await rectangle(f, features, d, b, pilot, &memo);
+  memo.freeze();
+  Nested spec = specFor(features, d, b, options(estimate.value), &memo);
   std::vector<OuterLeaf> r = co_await tabulate(f, std::move(spec), xShare, yShare);
   co_return r;
 }
@@ -805,8 +839,10 @@ Task<CellIntegral> cellIntegral(Density& f, const DensityFeatures& features, con
   // when refined). So compare two refinement levels: integrate again with every piece
   // bisected verifyDepth more times and tolerances ten times tighter, and keep the finer
   // value. Where the refinement converges (the finer error at most half the coarser), the
-  // finer value's error is at most the change |fine − coarse|; its own Gauss–Kronrod
-  // estimate is the other bound, and the smaller of the two is reported. This is a
+  // finer value's error is at most the change |fine − coarse| plus its noise (the pieces
+  // accepted as round-off noise are the same in both levels, so the change does not see
+  // their errors: CellIntegral::noise); its own Gauss–Kronrod estimate is the other bound,
+  // and the smaller of the two is reported. This is a
   // heuristic, as Gauss–Kronrod's own estimate is: a feature that the deeper level begins
   // to resolve moves the value and keeps the estimate up, but a lobe narrower than both
   // levels' pieces and not declared (Subject::peaks) can escape both, as it escapes any
@@ -817,14 +853,16 @@ Task<CellIntegral> cellIntegral(Density& f, const DensityFeatures& features, con
   fine.outerRelTolerance /= 10;
   fine.cellAbsTolerance /= 10;
   const CellIntegral r = co_await rectangle(f, features, d, bounds, fine, &memo);
-  co_return CellIntegral{r.value, std::min(r.error, std::fabs(r.value - coarse.value))};
+  const double change = std::fabs(r.value - coarse.value);
+  if (change + r.noise < r.error) co_return CellIntegral{r.value, change + r.noise, r.noise};
+  co_return r;
 }
 
 CellIntegral integrateRectangle(const DensityFn& f, const DensityFeatures& features,
-                                const Domain& domain, const CellBounds& rectangle,
+                                const Domain& domain, const CellBounds& bounds,
                                 const QuadratureOptions& options) {
   Density d(f);
-  return d.run(rectangleIntegral(d, features, domain, rectangle, options));
+  return d.run(rectangle(d, features, domain, bounds, options, nullptr));
 }
 
 CellIntegral integrateCell(const DensityFn& f, const DensityFeatures& features,

@@ -1,20 +1,18 @@
 // The quadrature's computations (quadrature.cpp), for the partition's (partition.cpp) to await:
-// the same integrals as integrateRectangle and integrateCell, given a Density (density.h). The
+// the same integrals as integrateCell, and tabulations, given a Density (density.h). The
 // bounds and options are taken by value: a computation may start after its caller's temporaries.
 #pragma once
 
 #include <verity/chi2/quadrature.h>
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "density.h"
 
 namespace verity::chi2 {
 
-Task<CellIntegral> rectangleIntegral(Density& f, const DensityFeatures& features,
-                                     const Domain& domain, CellBounds rectangle,
-                                     QuadratureOptions options);
 Task<CellIntegral> cellIntegral(Density& f, const DensityFeatures& features, const Domain& domain,
                                 int cell, QuadratureOptions options);
 
@@ -45,6 +43,12 @@ Task<std::vector<OuterLeaf>> tabulateRectangle(Density& f, const DensityFeatures
                                                const Domain& domain, CellBounds rectangle,
                                                QuadratureOptions options, double xShare,
                                                double yShare);
+// The same with the tolerances that options(mass) gives for the rectangle's mass, estimated
+// first by one rule on each piece of the tabulation's first level (options(0) to depth 0),
+// whose evaluations the tabulation then reuses.
+Task<std::vector<OuterLeaf>> tabulateRectangleToItsMass(
+    Density& f, const DensityFeatures& features, const Domain& domain, CellBounds rectangle,
+    std::function<QuadratureOptions(double mass)> options, double xShare, double yShare);
 // The profile along y at x, as the nested integral over `rectangle` would compute it there: so
 // that a tabulation's ends (x = rectangle.x0, x1), which its rule's nodes never reach, can be
 // seen.

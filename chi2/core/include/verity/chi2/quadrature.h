@@ -73,6 +73,12 @@ struct CellIntegral {
   // integrals' estimates integrated over x by the outer rule's own weights; for a cell
   // compared at two refinement levels, the smaller of that and the levels' difference.
   double error = 0;
+  // The part of `error` that is round-off noise: pieces whose halves' estimates stayed at
+  // the whole's size (a density evaluated in single precision is a staircase of rounding
+  // steps there). Their errors along one line are independent draws of either sign, added
+  // in quadrature; a second level stops at the same pieces, so its agreement with the first
+  // says nothing of them, and the comparison of levels keeps this part.
+  double noise = 0;
 };
 
 // ∫∫ f over a rectangle of the domain, clipped by its support, split at the features (the
