@@ -315,7 +315,9 @@ Task<typename Integrand::Result> bisect(Density& d, const Integrand& f, double a
   // noise buys nothing; accept the halves. A jump, a kink or a lobe that the halves find
   // and the whole missed can raise the error too, but it sits in one half (the halves'
   // errors are unequal) or moves the estimate by more than its error.
-  const bool noise = e0 + e1 > 0.8 * whole.error && std::min(e0, e1) > 0.25 * std::max(e0, e1) &&
+  const bool noise = e0 + e1 > 0.8 * whole.error &&
+                     std::min(e0, e1) > (std::getenv("NR") ? std::atof(std::getenv("NR")) : 0.25) *
+                                            std::max(e0, e1) &&
                      std::fabs(r0.value + r1.value - whole.value) <= 2 * whole.error;
   if (noise) co_return Result::noise(std::move(halves[0]), std::move(halves[1]), a, b);
   const bool done0 = accepted(r0, a, m, tolerancePerWidth, depth - 1),
@@ -829,7 +831,10 @@ Task<CellIntegral> cellIntegral(Density& f, const DensityFeatures& features, con
   // A large cell (relTolerance of its value above its share) that met relTolerance is as
   // accurate as a density evaluated in single precision allows: a second level would only
   // refine rounding steps (it took over half the rules of a rough dielectric's grid).
-  if (options.verifyDepth == 0 || !(coarse.error > std::max(share, o.cellAbsTolerance)))
+  // Nor would it reduce the noise (CellIntegral::noise), whose pieces it would accept again:
+  // only the rest of the estimate is worth a second level.
+  if (options.verifyDepth == 0 ||
+      !(coarse.error - coarse.noise > std::max(share, o.cellAbsTolerance)))
     co_return coarse;
   // The cell missed its tolerance. Either a feature is not yet resolved, or the
   // density is a staircase of single-precision rounding steps (grazing Beckmann and GGX,
