@@ -184,19 +184,26 @@ struct Leaves {
 template <class R>
 using ResultOf = std::conditional_t<std::is_same_v<R, Rule>, Part, Leaves<R>>;
 
-// The rules a computation took along y, with their nodes' values, by their x and piece: a
-// cell's pilot estimate, its coarse level and its verifying level start from the same pieces,
-// and so do a tabulation and the pilot that set its tolerances, whose densities are then
-// evaluated once (half the points of a smooth lobe's grid). Kept by one computation at a time;
-// once frozen, read by any number at once.
+// The rules a computation took along y, by their x and piece: a cell's pilot estimate, its
+// coarse level and its verifying level start from the same pieces, whose densities are then
+// evaluated once (half the points of a smooth lobe's grid). With `nodes`, the rules' values at
+// their nodes too, for a tabulation to reuse the rules of the pilot that set its tolerances.
+// Kept by one computation at a time; once frozen, read by any number at once.
 class RuleMemo {
  public:
-  const NodeRule* find(double x, double a, double b) const {
+  explicit RuleMemo(bool nodes = false) : keepsNodes_(nodes) {}
+
+  // The rule on [a, b] at x, and its nodes' values where kept (else null).
+  std::pair<const Rule*, const Nodes*> find(double x, double a, double b) const {
     const auto it = rules_.find(key(x, a, b));
-    return it == rules_.end() ? nullptr : &it->second;
+    if (it == rules_.end()) return {nullptr, nullptr};
+    return {&it->second, keepsNodes_ ? &nodes_[it->second.index] : nullptr};
   }
-  void keep(double x, double a, double b, const NodeRule& r) {
-    if (!frozen_) rules_.emplace(key(x, a, b), r);
+  // `values`: the integrand at the rule's nodes.
+  void keep(double x, double a, double b, const Rule& r, const double* values) {
+    if (frozen_) return;
+    const bool added = rules_.try_emplace(key(x, a, b), Kept{r, nodes_.size()}).second;
+    if (added && keepsNodes_) std::copy_n(values, kNodes, nodes_.emplace_back().begin());
   }
   void freeze() { frozen_ = true; }
 
@@ -212,8 +219,12 @@ class RuleMemo {
   static Key key(double x, double a, double b) {
     return {std::bit_cast<uint64_t>(x), std::bit_cast<uint64_t>(a), std::bit_cast<uint64_t>(b)};
   }
-  std::unordered_map<Key, NodeRule, Hash> rules_;
-  bool frozen_ = false;
+  struct Kept : Rule {
+    size_t index = 0;  // of its nodes' values in nodes_
+  };
+  std::unordered_map<Key, Kept, Hash> rules_;
+  std::vector<Nodes> nodes_;
+  bool keepsNodes_ = false, frozen_ = false;
 };
 
 // The density along y at one x, the inner integrals' integrand. Its rules are awaiters, not
@@ -245,11 +256,19 @@ struct AlongYOf {
     bool await_ready() {
       if (along.memo) {
         remembered = true;
-        for (size_t k = 0; k < Rules && remembered; ++k)
-          if (const NodeRule* r = along.memo->find(along.x, ends[k], ends[k + 1]))
-            rules[k] = static_cast<const R&>(*r);
-          else
-            remembered = false;
+        for (size_t k = 0; k < Rules && remembered; ++k) {
+          const auto [rule, nodes] = along.memo->find(along.x, ends[k], ends[k + 1]);
+          if constexpr (std::is_same_v<R, Rule>) {
+            remembered = rule != nullptr;
+            if (rule) rules[k] = *rule;
+          } else {
+            remembered = nodes != nullptr;
+            if (nodes) {
+              static_cast<Rule&>(rules[k]) = *rule;
+              rules[k].at = *nodes;
+            }
+          }
+        }
         if (remembered) return true;
       }
       return request().await_ready();
@@ -261,11 +280,10 @@ struct AlongYOf {
       if (remembered) return rules;
       const auto plain = rulesFrom<Rules>(ends, [&](size_t i) { return Sample{values[i], 0}; });
       for (size_t k = 0; k < Rules; ++k) {
-        NodeRule r;
-        static_cast<Rule&>(r) = plain[k];
-        std::copy_n(values.begin() + k * kNodes, kNodes, r.at.begin());
-        if (along.memo) along.memo->keep(along.x, ends[k], ends[k + 1], r);
-        rules[k] = static_cast<const R&>(r);
+        const double* at = values.data() + k * kNodes;
+        if (along.memo) along.memo->keep(along.x, ends[k], ends[k + 1], plain[k], at);
+        static_cast<Rule&>(rules[k]) = plain[k];
+        if constexpr (!std::is_same_v<R, Rule>) std::copy_n(at, kNodes, rules[k].at.begin());
       }
       return rules;
     }
@@ -766,7 +784,7 @@ Task<std::vector<OuterLeaf>> tabulateRectangle(Density& f, const DensityFeatures
 Task<std::vector<OuterLeaf>> tabulateRectangleToItsMass(
     Density& f, const DensityFeatures& features, const Domain& d, CellBounds b,
     std::function<QuadratureOptions(double mass)> options, double xShare, double yShare) {
-  RuleMemo memo;
+  RuleMemo memo(true);
   QuadratureOptions pilot = options(0);
   pilot.maxDepth = 0;
   const CellIntegral estimate = co_await rectangle(f, features, d, b, pilot, &memo);
