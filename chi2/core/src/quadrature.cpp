@@ -525,18 +525,9 @@ Task<CellIntegral> nested(Density& d, Nested spec) {
         adaptive(d, inner, xs[k], xs[k + 1], outer,
                  spec.options.cellAbsTolerance * (xs[k + 1] - xs[k]) / (spec.x1 - spec.x0)));
   const std::vector<Part> done = co_await d.all(std::move(parts));
-  CellIntegral result;
-  Errors errors;
-  for (const Part& p : done) {
-    result.value += p.value;
-    errors.rule += p.errors.rule;
-    errors.carried += p.errors.carried;
-    errors.noise2 += p.errors.noise2;
-    errors.carriedNoise += p.errors.carriedNoise;
-  }
-  result.error = errors.total();
-  result.noise = errors.noise();
-  co_return result;
+  Part all;
+  for (const Part& p : done) all = Part::sum(all, p);
+  co_return CellIntegral{all.value, all.errors.total(), all.errors.noise()};
 }
 
 Task<std::vector<CellIntegral>> gridIntegrals(Density& f, const Domain& domain,
