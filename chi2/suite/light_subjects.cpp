@@ -73,6 +73,27 @@ class LightSubject : public Subject {
     return zs;
   }
 
+  // Where that outline passes height z: a cone's azimuths there, and each edge's where the
+  // great circle through it (the cone of cosine 0 about A × B) meets the circle of height z
+  // between A and B.
+  std::vector<double> breakpointCrossingsX(double z) const override {
+    if (setup_.sampling == LightSampling::SphereArea) return {};
+    if (sphere_) {
+      const std::optional<Cone> cone = visibleCone();
+      return cone ? coneAzimuths(cone->axis, cone->cosAngle, z) : std::vector<double>{};
+    }
+    std::vector<double> phis;
+    for (const auto& [A, B] : edges_) {
+      const Vector3d m = A.cross(B);
+      if (!(m.norm() > 0)) continue;
+      for (double phi : coneAzimuths(m.normalized(), 0, z)) {
+        const Vector3d w = sphereDirection(phi, z);
+        if (A.cross(w).dot(m) >= 0 && w.cross(B).dot(m) >= 0) phis.push_back(phi);
+      }
+    }
+    return phis;
+  }
+
   std::vector<Point2d> peaks() const override {
     if (setup_.sampling == LightSampling::SphereArea || !sphere_) return {};
     const std::optional<Cone> cone = visibleCone();

@@ -82,6 +82,7 @@ std::unique_ptr<Subject> makeMicrofacetNormalSubject(const MicrofacetDistributio
     const double a = w.x() * std::cos(phi) + w.y() * std::sin(phi);
     return std::vector<double>{-a / std::sqrt(a * a + w.z() * w.z())};
   };
+  m.breakpointCrossingsX = [w](double z) { return coneAzimuths(w, 0, z); };
   return std::make_unique<WarpSubject>(name, std::move(m), res);
 }
 

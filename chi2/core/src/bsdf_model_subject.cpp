@@ -264,10 +264,9 @@ void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd
   if (worst >= 0) audit.record(Defect::Reciprocity, worst, example);
 }
 
-std::vector<double> BsdfModelSubject::breakpointsY(double phi) const {
+std::vector<double> BsdfModelSubject::jumpCones() const {
   // The shading horizon n·ω = 0.
-  const Vector3d& n = setup_.frame.n;
-  std::vector<double> z = coneCrossings(n, 0, phi);
+  std::vector<double> cosAngles{0};
   if (model_.relativeIndex() != 1) {
     // Transmission ends where the generalised half vector −(ηi ωi + ηo ωo) turns
     // perpendicular to n (Walter et al. 2007, eq. 16), i.e. on the cone
@@ -276,9 +275,23 @@ std::vector<double> BsdfModelSubject::breakpointsY(double phi) const {
     const double cosI = setup_.wi.z();
     const double etaI = indexOn(setup_.wi);
     const double etaO = cosI > 0 ? model_.interiorIndex : model_.exteriorIndex;
-    for (double c : coneCrossings(n, -etaI * cosI / etaO, phi)) z.push_back(c);
+    cosAngles.push_back(-etaI * cosI / etaO);
   }
+  return cosAngles;
+}
+
+std::vector<double> BsdfModelSubject::breakpointsY(double phi) const {
+  std::vector<double> z;
+  for (double c : jumpCones())
+    for (double crossing : coneCrossings(setup_.frame.n, c, phi)) z.push_back(crossing);
   return z;
+}
+
+std::vector<double> BsdfModelSubject::breakpointCrossingsX(double z) const {
+  std::vector<double> phi;
+  for (double c : jumpCones())
+    for (double azimuth : coneAzimuths(setup_.frame.n, c, z)) phi.push_back(azimuth);
+  return phi;
 }
 
 std::vector<Point2d> BsdfModelSubject::peaks() const {

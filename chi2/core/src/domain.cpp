@@ -166,6 +166,18 @@ std::vector<double> coneCrossings(const Vector3d& axis, double cosAngle, double 
   return z;
 }
 
+std::vector<double> coneAzimuths(const Vector3d& axis, double cosAngle, double z) {
+  // On the circle, ω = (s cos φ, s sin φ, z) with s = √(1 − z²): ω·axis = s·A cos(φ − φa) +
+  // axis.z·z, with A = |axis.xy| and φa its azimuth.
+  const double s = std::sqrt(std::max(0.0, 1 - z * z)), A = std::hypot(axis.x(), axis.y());
+  if (!(s * A > 0)) return {};
+  const double c = (cosAngle - axis.z() * z) / (s * A);
+  if (!(std::fabs(c) <= 1)) return {};
+  const double phiAxis = std::atan2(axis.y(), axis.x()), spread = std::acos(c);
+  if (spread == 0) return {wrapAzimuth(phiAxis)};
+  return {wrapAzimuth(phiAxis - spread), wrapAzimuth(phiAxis + spread)};
+}
+
 std::vector<Point2d> coneTangentPoints(const Vector3d& axis, double cosAngle) {
   // The meridian plane with normal m = (−sin φ, cos φ, 0) touches the cone when the axis
   // makes the cone's half-angle with it: |axis·m| = sin(half-angle). The point of contact

@@ -424,6 +424,7 @@ struct Nested {
   double x0, x1, y0, y1;
   QuadratureOptions options;
   RuleMemo* memo;
+  BreakpointFn crossings;  // where the jumps of `breaks` pass a given height
 };
 
 // The pieces of the inner range at x, in order: the support's extent in y split at the
@@ -509,6 +510,13 @@ std::vector<double> outerPieces(const Nested& spec) {
   std::vector<double> xCuts;
   for (double b : spec.xBreaks)
     if (b > spec.x0 && b < spec.x1) xCuts.push_back(b);
+  // Where a jump enters or leaves through the lower or upper edge, the inner integral starts
+  // or stops there: a jump that dips just into the rectangle leaves it a sliver of density
+  // that the outer rule's nodes may all miss.
+  if (spec.crossings)
+    for (double y : {spec.y0, spec.y1})
+      for (double b : spec.crossings(y))
+        if (b > spec.x0 && b < spec.x1) xCuts.push_back(b);
   for (const Point2d& p : spec.peaks)
     addGradedCuts(p.x(), spec.x1 - spec.x0, spec.x0, spec.x1, xCuts);
   return pieces(spec.x0, spec.x1, std::move(xCuts));
@@ -581,7 +589,8 @@ Nested specFor(const DensityFeatures& features, const Domain& d, const CellBound
           b.y0,
           b.y1,
           options,
-          memo};
+          memo,
+          features.crossingsX};
 }
 
 // ∫∫ f over a rectangle, as integrateRectangle; its rules along y kept in `memo` where given.

@@ -94,7 +94,8 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
     return 0.0;
   };
   const DensityFeatures features{[&](double x) { return subject.breakpointsY(x); },
-                                 subject.breakpointsX(), subject.peaks()};
+                                 subject.breakpointsX(), subject.peaks(),
+                                 [&](double y) { return subject.breakpointCrossingsX(y); }};
   // The cells, cut from the subject's domain (equal-probability cells follow the claimed pdf:
   // partition.h), and the claimed density over each; through batches of points where the
   // subject evaluates its density so, with the same figures (DensityBatchFn).

@@ -100,4 +100,8 @@ std::vector<double> WarpSubject::breakpointsY(double x) const {
   return breaks;
 }
 
+std::vector<double> WarpSubject::breakpointCrossingsX(double y) const {
+  return model_.breakpointCrossingsX ? model_.breakpointCrossingsX(y) : std::vector<double>{};
+}
+
 }  // namespace verity::chi2

@@ -37,7 +37,7 @@ TEST(FrameworkPartitionCost, CutsItsCellsForNoMoreEvaluationsThanIntegratingThem
     DensityFn f;
     DensityFeatures features;
   };
-  const DensityFeatures horizon{[](double) { return std::vector<double>{0.0}; }, {}, {}};
+  const DensityFeatures horizon{[](double) { return std::vector<double>{0.0}; }, {}, {}, {}};
   const Point2d axis = sphereCoords(Vector3d(0.5, 0, std::sqrt(0.75)));
   const std::vector<Case> cases{
       {"cosine", sphereDomain(32),
@@ -46,16 +46,16 @@ TEST(FrameworkPartitionCost, CutsItsCellsForNoMoreEvaluationsThanIntegratingThem
        horizon},
       {"Phong 10^4", sphereDomain(32),
        [](double x, double y) { return phongLobe<double>(1e4, x, y); },
-       DensityFeatures{horizon.breaksY, {}, {axis}}},
+       DensityFeatures{horizon.breaksY, {}, {axis}, {}}},
       // Single-precision staircases: the cells' integrals refine many steps to the depth
       // limit (20 times the evaluations of the smooth twin's), the partition's refinement is
       // bounded.
       {"Phong 10^4 float", sphereDomain(32),
        [](double x, double y) { return phongLobe<float>(1e4, x, y); },
-       DensityFeatures{horizon.breaksY, {}, {axis}}},
+       DensityFeatures{horizon.breaksY, {}, {axis}, {}}},
       {"Phong 10^5 float", sphereDomain(32),
        [](double x, double y) { return phongLobe<float>(1e5, x, y); },
-       DensityFeatures{horizon.breaksY, {}, {axis}}},
+       DensityFeatures{horizon.breaksY, {}, {axis}, {}}},
       {"Gaussian",
        squareDomain(16),
        [](double x, double y) {

@@ -74,7 +74,7 @@ TEST(FrameworkPartition, SmoothDensityCellsHoldEqualShares) {
 TEST(FrameworkPartition, NarrowLobeCellsHoldEqualShares) {
   // σ = 10⁻³: on the 16 × 16 grid the lobe lies in one cell; here every cell holds 1/256.
   const DensityFn f = gaussian({0.37, 0.61}, 1e-3);
-  const DensityFeatures features{{}, {}, {Point2d(0.37, 0.61)}};
+  const DensityFeatures features{{}, {}, {Point2d(0.37, 0.61)}, {}};
   const Domain d = equalProbabilityCells(squareDomain(16), f, features);
   // The density underflows to 0 beyond 38σ: a strip on either side, and a cell below and
   // above the lobe in every other strip, expect nothing.
@@ -85,7 +85,7 @@ TEST(FrameworkPartition, NarrowLobeCellsHoldEqualShares) {
 TEST(FrameworkPartition, PhongLobeOnTheSphereKeepsItsCellsAndAZeroHemisphere) {
   // Exponent 10⁴: on the 64 × 32 grid of (φ, cos θ) 4 cells expect 5 of 10⁶ samples.
   const DensityFn f = phongLobe(1e4);
-  const DensityFeatures features{[](double) { return std::vector<double>{0.0}; }, {}, {}};
+  const DensityFeatures features{[](double) { return std::vector<double>{0.0}; }, {}, {}, {}};
   const Domain d = equalProbabilityCells(sphereDomain(32), f, features);
   const std::vector<double> p = probabilities(d, f, features);
   // Per strip one cell below the lobe (the lower hemisphere and more) and one above it; and
@@ -111,7 +111,7 @@ TEST(FrameworkPartition, PhongLobeOnTheSphereKeepsItsCellsAndAZeroHemisphere) {
 TEST(FrameworkPartition, ZeroRegionAtAnEndIsACellThatExpectsNothing) {
   // Zero for x < 0.3 and for y > 0.8: a strip and a row of cells that expect nothing.
   const DensityFn f = [](double x, double y) { return x >= 0.3 && y <= 0.8 ? 1.0 + y : 0.0; };
-  const DensityFeatures features{[](double) { return std::vector<double>{0.8}; }, {0.3}, {}};
+  const DensityFeatures features{[](double) { return std::vector<double>{0.8}; }, {0.3}, {}, {}};
   const Domain d = equalProbabilityCells(squareDomain(8), f, features);
   EXPECT_DOUBLE_EQ(d.xEdge(1), 0.3);
   for (int i = 1; i < 8; ++i) EXPECT_DOUBLE_EQ(d.yEdge(i, 7), 0.8) << "strip " << i;
@@ -127,7 +127,7 @@ TEST(FrameworkPartition, AHorizonThatMovesAcrossAStripLeavesNoCellTakenForEmpty)
   // fails the test outright.
   const auto horizon = [](double x) { return 0.5 + 0.1 * (0.9959 - x); };
   const DensityFn f = [&](double x, double y) { return y > horizon(x) ? 1.0 : 0.0; };
-  const DensityFeatures features{[](double) { return std::vector<double>{0.49, 0.5}; }, {}, {}};
+  const DensityFeatures features{[](double) { return std::vector<double>{0.49, 0.5}; }, {}, {}, {}};
   Domain one;  // the unit square as one strip of 8 cells
   one.ny = 8;
   const Domain d = equalProbabilityCells(one, f, features);

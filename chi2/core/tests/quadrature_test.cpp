@@ -195,4 +195,30 @@ TEST(FrameworkQuadratureBounds, GradedPiecesDoNotInflateTheEstimate) {
   EXPECT_LE(r.error, w) << "value " << r.value;
 }
 
+TEST(FrameworkQuadratureBounds, AJumpThatDipsIntoACellLeavesASliverThatIsIntegrated) {
+  // 1 above the parabola y = 0.5 − h + (x − 0.37)², 0 below it, over the cell [0, 1] ×
+  // [0.2, 0.5]: the jump dips 10⁻⁴ below the cell's upper edge, so the cell holds a sliver
+  // 0.02 wide, between nodes of the outer rule, of area (4/3)·h^(3/2). As an equal-probability
+  // cell under a rotated normal lay beneath where a rough dielectric's refraction ends: a
+  // sample landed in a cell whose integral read 10⁻¹⁸, an outright failure of a correct
+  // material. The jump is declared (breaksY) with where it crosses a height (crossingsX),
+  // as BsdfModelSubject does for its cones; the outer range splits where it meets the edges.
+  const double h = 1e-4, x0 = 0.37;
+  const auto curve = [=](double x) { return 0.5 - h + (x - x0) * (x - x0); };
+  const DensityFn f = [=](double x, double y) { return y > curve(x) ? 1.0 : 0.0; };
+  DensityFeatures features;
+  features.breaksY = [=](double x) { return std::vector<double>{curve(x)}; };
+  features.crossingsX = [=](double y) {
+    const double d = y - (0.5 - h);
+    if (d < 0) return std::vector<double>{};
+    return std::vector<double>{x0 - std::sqrt(d), x0 + std::sqrt(d)};
+  };
+  const CellIntegral r =
+      integrateRectangle(f, features, squareDomain(1), CellBounds{0, 1, 0.2, 0.5}, {});
+  const double truth = 4.0 / 3 * std::pow(h, 1.5);
+  // To the rounding of the crossings' abscissae (√(y − 0.5 + h) from a difference of numbers
+  // near 0.5: 10⁻¹³ relative), which the estimate does not include.
+  EXPECT_NEAR(r.value, truth, 1e-9 * truth);
+}
+
 }  // namespace verity::chi2

@@ -121,6 +121,30 @@ TEST(FrameworkDomain, ConeTangentPointsBoundTheConesAzimuths) {
   EXPECT_TRUE(coneTangentPoints(axis, std::cos(60 * std::numbers::pi / 180)).empty());
 }
 
+TEST(FrameworkDomain, ConeAzimuthsAreWhereTheMeridiansCrossingsPassAHeight) {
+  // The same cone, which spans cos θ from cos 70° to cos 30°: at each height between, its two
+  // azimuths lie on it, and the meridian there crosses the cone at that height. Heights
+  // above and below meet it nowhere.
+  const Vector3d axis = sphereDirection(1.0, std::cos(50 * std::numbers::pi / 180));
+  const double cosAngle = std::cos(20 * std::numbers::pi / 180);
+  for (double z : {0.35, 0.5, 0.64, 0.86}) {
+    const std::vector<double> phis = coneAzimuths(axis, cosAngle, z);
+    ASSERT_EQ(phis.size(), 2u) << "z " << z;
+    for (double phi : phis) {
+      EXPECT_GE(phi, 0);
+      EXPECT_LT(phi, 2 * std::numbers::pi);
+      EXPECT_NEAR(sphereDirection(phi, z).dot(axis), cosAngle, 1e-12) << "z " << z;
+      const std::vector<double> zs = coneCrossings(axis, cosAngle, phi);
+      EXPECT_TRUE(
+          std::any_of(zs.begin(), zs.end(), [z](double c) { return std::fabs(c - z) < 1e-9; }))
+          << "z " << z << ", phi " << phi;
+    }
+  }
+  for (double z : {-0.5, 0.33, 0.87}) EXPECT_TRUE(coneAzimuths(axis, cosAngle, z).empty()) << z;
+  // A cone about the pole meets a circle of latitude everywhere or nowhere: no azimuth.
+  EXPECT_TRUE(coneAzimuths(Vector3d::UnitZ(), 0.5, 0.5).empty());
+}
+
 TEST(FrameworkDomain, DirectionAtLastAzimuthIsTheDirection) {
   // Runs of one azimuth, as an inner integral asks, then a new azimuth, a return to an
   // earlier one, and 0 (the kept azimuth's starting value) after others.

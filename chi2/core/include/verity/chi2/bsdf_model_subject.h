@@ -48,6 +48,7 @@ class BsdfModelSubject : public Subject {
   void extraChecks(Audit& audit) const override;
   // The shading horizon and, for a transmitter, where refraction ends.
   std::vector<double> breakpointsY(double phi) const override;
+  std::vector<double> breakpointCrossingsX(double z) const override;
   // The mirror direction of wi about the shading normal and, for a transmitter, its
   // refracted direction (where a lobe narrows to a spike as α → 0 or η → 1).
   std::vector<Point2d> peaks() const override;
@@ -66,6 +67,9 @@ class BsdfModelSubject : public Subject {
 
  private:
   struct PointByPoint;
+  // The cosines, about the shading normal, of the cones along which the density jumps: the
+  // horizon and, for a transmitter, where refraction ends (breakpointsY).
+  std::vector<double> jumpCones() const;
   // us.size() uniforms from rng and the model's samples for them (drawn, of the same size),
   // through its batched form where it has one: what sampleBatch and the floor draw alike.
   void draw(pcg32& rng, std::vector<BsdfUniforms>& us,

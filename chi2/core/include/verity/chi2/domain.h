@@ -78,6 +78,9 @@ Point2d sphereCoords(const Vector3d& v);
 // The cos θ values at azimuth φ where a direction meets the cone ω·axis = cosAngle (none,
 // one or two; a great circle when cosAngle = 0): where a density bounded by that cone jumps.
 std::vector<double> coneCrossings(const Vector3d& axis, double cosAngle, double phi);
+// The azimuths φ in [0, 2π) where the circle of height cos θ = z meets that cone (none, one or
+// two): where the cone's crossings of the meridians pass through height z.
+std::vector<double> coneAzimuths(const Vector3d& axis, double cosAngle, double z);
 // The points (φ, cos θ) where a meridian touches that cone: the ends of its range in φ (none
 // when the cone holds a pole). Across them the length of the cone's chord along a meridian
 // grows like √|Δφ|, a singularity of the integral over φ.

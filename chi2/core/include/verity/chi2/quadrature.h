@@ -32,6 +32,10 @@ struct DensityFeatures {
   BreakpointFn breaksY;         // jumps in y at a given x
   std::vector<double> breaksX;  // abscissae where the density jumps or kinks for all y
   std::vector<Point2d> peaks;   // lobes far narrower than a cell: cuts graded towards them
+  // The abscissae where the jumps of breaksY pass through a given height y: a rectangle's
+  // outer range is split where they meet its lower and upper edges (Subject::
+  // breakpointCrossingsX).
+  BreakpointFn crossingsX;
 };
 
 struct QuadratureOptions {

@@ -40,6 +40,11 @@ class Subject {
   // horizon that crosses cells): the inner quadrature splits there instead of refining a
   // discontinuity to its maximum depth.
   virtual std::vector<double> breakpointsY(double x) const { return {}; }
+  // The abscissae where those jumps pass through height y (a cone's crossings of the
+  // meridians meet a circle of latitude): a cell's outer quadrature splits there. Where a
+  // jump dips just into a cell, the density in the cell is a sliver next to that edge,
+  // narrower than the spacing of the outer rule's nodes, which would read it as zero.
+  virtual std::vector<double> breakpointCrossingsX(double y) const { return {}; }
   // Abscissae where the density jumps or kinks for every y (an edge along a meridian): the
   // outer quadrature splits there.
   virtual std::vector<double> breakpointsX() const { return {}; }

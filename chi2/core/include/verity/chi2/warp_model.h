@@ -33,6 +33,9 @@ struct WarpModel {
   // the values of cos θ at azimuth φ, e.g. the rim of a spherical cap), so that the
   // quadrature splits there rather than refining a discontinuity.
   std::function<std::vector<double>(double x)> breakpointsY;
+  // Optional, with breakpointsY: the abscissae where those jumps pass through height y
+  // (Subject::breakpointCrossingsX), so that a cell which a jump only dips into is split there.
+  std::function<std::vector<double>(double y)> breakpointCrossingsX;
   // Optional batched forms, one call for many points (SIMD or GPU code, NumPy): out[k] =
   // sample(u[k]) and values[k] = pdf(points[k]). Where set, the check draws each chunk of
   // samples, or integrates the density a refinement level at a time (DensityBatchFn, quadrature.h),

@@ -22,6 +22,7 @@ class WarpSubject : public Subject {
   bool batchedPdf() const override { return bool(model_.pdfBatch); }
   void pdfBatch(const std::vector<Point2d>& points, std::vector<double>& values) const override;
   std::vector<double> breakpointsY(double x) const override;
+  std::vector<double> breakpointCrossingsX(double y) const override;
   std::string describe() const override { return name_; }
 
  private:
