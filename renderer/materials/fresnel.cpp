@@ -56,6 +56,10 @@ float conductorChannel(float cosThetaI, float eta, float k) {
 
 Color3 fresnelConductor(float cosThetaI, const Color3& eta, const Color3& k) {
   cosThetaI = std::clamp(cosThetaI, 0.0f, 1.0f);
+  // A grey index (one η and κ for every channel, as the materials' defaults are): the same
+  // figures from one channel's arithmetic, a third of the cost.
+  if ((eta == eta.x()).all() && (k == k.x()).all())
+    return Color3::Constant(conductorChannel(cosThetaI, eta.x(), k.x()));
   return {conductorChannel(cosThetaI, eta.x(), k.x()), conductorChannel(cosThetaI, eta.y(), k.y()),
           conductorChannel(cosThetaI, eta.z(), k.z())};
 }

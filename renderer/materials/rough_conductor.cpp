@@ -11,9 +11,19 @@
 
 namespace verity {
 
-MicrofacetDistribution RoughConductor::distribution(const TextureQuery& q) const {
-  const float r = std::max(p_.roughness.evalScalar(q), 0.0f);
+RoughConductor::RoughConductor(Params params) : p_(std::move(params)) {
+  if (p_.roughness.isConstant())
+    constantDistribution_ = distributionOf(p_.roughness.constant().mean());
+}
+
+MicrofacetDistribution RoughConductor::distributionOf(float r) const {
+  r = std::max(r, 0.0f);
   return MicrofacetDistribution(p_.distribution, p_.squareRoughness ? r * r : r, p_.sampling);
+}
+
+MicrofacetDistribution RoughConductor::distribution(const TextureQuery& q) const {
+  return constantDistribution_ ? *constantDistribution_
+                               : distributionOf(p_.roughness.evalScalar(q));
 }
 
 Color3 RoughConductor::eval(const TextureQuery& q, const Vector3f& wi, const Vector3f& wo,

@@ -35,7 +35,7 @@ class RoughConductor : public Material {
     Color3 k = Color3::Constant(3.9f);
   };
 
-  explicit RoughConductor(Params params) : p_(std::move(params)) {}
+  explicit RoughConductor(Params params);
 
   Color3 eval(const TextureQuery& q, const Vector3f& wi, const Vector3f& wo,
               TransportMode mode) const override;
@@ -47,7 +47,11 @@ class RoughConductor : public Material {
 
  private:
   MicrofacetDistribution distribution(const TextureQuery& q) const;
+  // The distribution for a roughness texture's value r.
+  MicrofacetDistribution distributionOf(float r) const;
   Params p_;
+  // An untextured roughness's distribution, built once: eval, pdf and sample each ask for it.
+  std::optional<MicrofacetDistribution> constantDistribution_;
 };
 
 // "beckmann", "ggx" and "metal" in the scene format (material_registry.h); "metal" with
