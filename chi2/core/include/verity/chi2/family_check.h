@@ -1,0 +1,98 @@
+// A BSDF checked over its whole parameter space, as a family: every corner of the box of its
+// parameters' accepted ranges and a stratified set of points inside it, each at every incidence
+// (and from below for a BSDF that transmits). Every check is sized by one target (`detect`) and
+// the family is held at one level by Šidák's correction over every statistical test of every
+// configuration, so that a correct BSDF fails anywhere with probability at most that level.
+// Defects live at the corners (grazing incidence, the smallest roughness, an index near 1): a
+// family makes them the first thing checked, not the last.
+#pragma once
+
+#include <verity/chi2/bsdf_adapter.h>
+#include <verity/chi2/check_result.h>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace verity::chi2 {
+
+// One parameter of the family and its range, both ends included: the values the BSDF's
+// loader accepts.
+struct FamilyParameter {
+  std::string name;
+  double lo = 0, hi = 1;
+  // Interior points spread evenly in log(value), for a range over decades (a roughness from
+  // 10⁻³ to 1); needs 0 < lo.
+  bool logarithmic = false;
+};
+
+struct FamilyOptions {
+  // Angles of incidence from the normal, in degrees, in [0, 90]: 90 is exactly grazing
+  // (wi.z = cos 90° = 6·10⁻¹⁷).
+  std::vector<double> incidences{0, 30, 60, 85, 89.9, 90};
+  // Every incidence from below the surface too (a BSDF that transmits).
+  bool fromBelow = false;
+  // Points inside the box beside its 2^d corners, stratified (a Latin hypercube: each
+  // parameter's range cut into this many equal parts, in log where logarithmic, one point in
+  // each), drawn from `seed`.
+  int interiorPoints = 8;
+  uint64_t seed = 1;
+  // The family-wise level: the probability that a correct BSDF fails any configuration.
+  double level = 0.01;
+  // Each configuration's check. Its name and significance are set per configuration (the
+  // seed, unless set, follows from the name: a configuration rerun alone draws the same
+  // samples); the rest applies to every one. By default each is sized to find a 2% density
+  // error over 1/4 of the mass.
+  BsdfCheckOptions check = defaultCheck();
+
+  static BsdfCheckOptions defaultCheck();
+};
+
+struct FamilyConfiguration {
+  std::vector<double> values;  // one per parameter, in their order
+  bool corner = false;         // a corner of the box, else an interior point
+  double incidence = 0;        // degrees from the normal
+  bool below = false;          // wi from below the surface
+  std::string name;            // "alpha=0.001 eta=3 at 89.9° from above"
+
+  // The incident direction in the local frame: (sin θ, 0, ±cos θ).
+  Eigen::Vector3d wi() const;
+};
+
+struct FamilyResult {
+  std::vector<FamilyParameter> parameters;
+  std::vector<FamilyConfiguration> configurations;
+  std::vector<CheckResult> results;  // one per configuration, in the same order
+  double level = 0;                  // family-wise
+  double perTestLevel = 0;           // Šidák's share of it for each statistical test
+  int statisticalTests = 0;
+
+  int count(Verdict verdict) const;
+  // PASSED only when every configuration passed; FAILED when any failed; else INCONCLUSIVE.
+  Verdict verdict() const;
+  bool passed() const { return verdict() == Verdict::Passed; }
+  // The configurations, failures first, then the inconclusive ones, then those that passed:
+  // each with what failed (the checks, the chi-square statistic, the worst per-sample
+  // defect) or why it could not run, and what a passed check could have caught.
+  std::string report() const;
+  std::string markdown() const;
+  std::string json() const;
+};
+
+// The BSDF at one point of the parameter box (values in the order of the parameters).
+using BsdfFamily = std::function<BsdfModel(const std::vector<double>& values)>;
+
+// The configurations checkBsdfFamily runs, in its order: the corners, then the interior
+// points, each at every incidence from above, then from below. Throws std::invalid_argument
+// naming the parameter or option that is out of range.
+std::vector<FamilyConfiguration> familyConfigurations(
+    const std::vector<FamilyParameter>& parameters, const FamilyOptions& options);
+
+// Checks every configuration, one after another, each on every core (checkBsdf): the result
+// does not depend on the number of threads.
+FamilyResult checkBsdfFamily(const BsdfFamily& family,
+                             const std::vector<FamilyParameter>& parameters,
+                             const FamilyOptions& options = {});
+
+}  // namespace verity::chi2

@@ -1,0 +1,299 @@
+#include <fmt/format.h>
+#include <verity/chi2/family_check.h>
+#include <verity/chi2/significance.h>
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <numeric>
+#include <pcg_random.hpp>
+#include <stdexcept>
+
+namespace verity::chi2 {
+
+namespace {
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument("checkBsdfFamily: " + what);
+}
+
+void validate(const std::vector<FamilyParameter>& parameters, const FamilyOptions& options) {
+  require(!parameters.empty(), "no parameter: a family needs at least one");
+  for (const FamilyParameter& p : parameters) {
+    const std::string name = p.name.empty() ? "a parameter without a name" : p.name;
+    require(!p.name.empty(), "every parameter needs a name");
+    require(std::isfinite(p.lo) && std::isfinite(p.hi) && p.lo <= p.hi,
+            fmt::format("parameter {}: its range [{}, {}] must be finite with lo <= hi", name, p.lo,
+                        p.hi));
+    require(!p.logarithmic || p.lo > 0,
+            fmt::format("parameter {}: a logarithmic range needs lo > 0 (it is {})", name, p.lo));
+  }
+  // 2^d corners: more than 2^20 is no family anyone runs.
+  require(parameters.size() <= 20,
+          fmt::format("{} parameters: at most 20 (2^d corners)", parameters.size()));
+  require(!options.incidences.empty(), "FamilyOptions::incidences is empty");
+  for (double t : options.incidences)
+    require(t >= 0 && t <= 90,
+            fmt::format("FamilyOptions::incidences: {} is not an angle in [0, 90] degrees", t));
+  require(options.interiorPoints >= 0,
+          fmt::format("FamilyOptions::interiorPoints = {} must be >= 0", options.interiorPoints));
+  require(options.level > 0 && options.level < 1,
+          fmt::format("FamilyOptions::level = {} must be in (0, 1)", options.level));
+}
+
+// A point of the box from its coordinates u in [0, 1]^d.
+std::vector<double> valuesAt(const std::vector<FamilyParameter>& parameters,
+                             const std::vector<double>& u) {
+  std::vector<double> v(parameters.size());
+  for (size_t i = 0; i < parameters.size(); ++i) {
+    const FamilyParameter& p = parameters[i];
+    v[i] = p.logarithmic ? std::exp(std::log(p.lo) + u[i] * (std::log(p.hi) - std::log(p.lo)))
+                         : p.lo + u[i] * (p.hi - p.lo);
+  }
+  return v;
+}
+
+// n points of a Latin hypercube in [0, 1]^d (McKay, Beckman and Conover 1979, "A comparison of
+// three methods for selecting values of input variables"): each coordinate's n strata hold one
+// point each, at a uniform position inside its stratum.
+std::vector<std::vector<double>> latinHypercube(int n, size_t d, uint64_t seed) {
+  pcg32 rng(seed);
+  std::vector<std::vector<double>> points(n, std::vector<double>(d));
+  std::vector<int> strata(n);
+  for (size_t j = 0; j < d; ++j) {
+    std::iota(strata.begin(), strata.end(), 0);
+    for (int k = n - 1; k > 0; --k) std::swap(strata[k], strata[rng(uint32_t(k + 1))]);
+    for (int k = 0; k < n; ++k) points[k][j] = (strata[k] + std::ldexp(double(rng()), -32)) / n;
+  }
+  return points;
+}
+
+std::string configurationName(const std::vector<FamilyParameter>& parameters,
+                              const std::vector<double>& values, double incidence, bool below) {
+  std::string s;
+  for (size_t i = 0; i < parameters.size(); ++i)
+    s += fmt::format("{}{}={:.6g}", i ? " " : "", parameters[i].name, values[i]);
+  return s + fmt::format(" at {:g}° from {}", incidence, below ? "below" : "above");
+}
+
+// The worst per-sample defect: the comparison furthest from its reference where one was
+// recorded, else the first defect's first example.
+std::string worstDefect(const Audit& audit) {
+  std::string out;
+  double worst = -1;
+  for (int d = 0; d < static_cast<int>(Defect::Count); ++d) {
+    const Defect defect = static_cast<Defect>(d);
+    if (audit.count(defect) == 0) continue;
+    const double w = audit.worst(defect);
+    if (out.empty() || w > worst) {
+      worst = w;
+      out = w > 0 ? fmt::format("{} (|ratio - 1| {:.3g}): {}", defectName(defect), w,
+                                audit.worstExample(defect))
+                  : fmt::format("{}: {}", defectName(defect), audit.example(defect));
+    }
+  }
+  return out;
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string s;
+  for (const std::string& item : items) s += (s.empty() ? "" : ", ") + item;
+  return s;
+}
+
+// The configurations in the report's order: failed, inconclusive, passed; each group in the
+// family's order.
+std::vector<size_t> reportOrder(const FamilyResult& r) {
+  std::vector<size_t> order;
+  for (Verdict v : {Verdict::Failed, Verdict::Inconclusive, Verdict::Passed})
+    for (size_t i = 0; i < r.results.size(); ++i)
+      if (r.results[i].verdict() == v) order.push_back(i);
+  return order;
+}
+
+// One row's facts, shared by the text, Markdown and JSON forms.
+struct Row {
+  std::string verdict, configuration, failed, chiSquare, defect, caught;
+};
+
+Row rowOf(const FamilyResult& r, size_t i) {
+  const CheckResult& c = r.results[i];
+  const TestResult& t = c.test;
+  Row row;
+  row.verdict = verdictName(c.verdict());
+  row.configuration = r.configurations[i].name;
+  if (c.verdict() == Verdict::Inconclusive)
+    row.failed = t.inconclusiveReason();
+  else if (!c.passed())
+    row.failed = joined(c.failures());
+  if (t.chiSquareRan())
+    row.chiSquare = fmt::format("{:.4g} on {} dof, p = {:.3g}", t.chiSquare.statistic,
+                                t.chiSquare.dof, t.chiSquare.pValue);
+  row.defect = worstDefect(t.audit);
+  if (t.chiSquarePower.ran())
+    row.caught = fmt::format("{:.2g}%", 100 * t.chiSquarePower.densityError(kStatedMass));
+  return row;
+}
+
+std::string summary(const FamilyResult& r) {
+  std::string params;
+  for (const FamilyParameter& p : r.parameters)
+    params += fmt::format("{}{} in [{:g}, {:g}]{}", params.empty() ? "" : ", ", p.name, p.lo, p.hi,
+                          p.logarithmic ? " (log)" : "");
+  return fmt::format(
+      "BSDF family of {}: {} configurations, {} statistical tests at a family-wise level of {:g} "
+      "(Sidak: {:.3g} per test); {} passed, {} failed, {} inconclusive: {}",
+      params, r.configurations.size(), r.statisticalTests, r.level, r.perTestLevel,
+      r.count(Verdict::Passed), r.count(Verdict::Failed), r.count(Verdict::Inconclusive),
+      verdictName(r.verdict()));
+}
+
+}  // namespace
+
+BsdfCheckOptions FamilyOptions::defaultCheck() {
+  BsdfCheckOptions o;
+  o.detect = DetectionTarget{0.02, kStatedMass, kDefaultPower};
+  return o;
+}
+
+Eigen::Vector3d FamilyConfiguration::wi() const {
+  const double t = incidence * std::numbers::pi / 180;
+  return {std::sin(t), 0, below ? -std::cos(t) : std::cos(t)};
+}
+
+std::vector<FamilyConfiguration> familyConfigurations(
+    const std::vector<FamilyParameter>& parameters, const FamilyOptions& options) {
+  validate(parameters, options);
+  const size_t d = parameters.size();
+  std::vector<std::pair<std::vector<double>, bool>> points;
+  // Corner k takes parameter j's upper end where bit j of k is set. A parameter of one value
+  // (lo = hi) gives its corners twice: they are kept once.
+  for (uint64_t k = 0; k < (uint64_t(1) << d); ++k) {
+    std::vector<double> v(d);
+    for (size_t j = 0; j < d; ++j) v[j] = (k >> j) & 1 ? parameters[j].hi : parameters[j].lo;
+    if (std::none_of(points.begin(), points.end(), [&](const auto& p) { return p.first == v; }))
+      points.emplace_back(std::move(v), true);
+  }
+  for (const std::vector<double>& u : latinHypercube(options.interiorPoints, d, options.seed))
+    points.emplace_back(valuesAt(parameters, u), false);
+  std::vector<FamilyConfiguration> out;
+  for (const auto& [values, corner] : points)
+    for (bool below : {false, true}) {
+      if (below && !options.fromBelow) continue;
+      for (double t : options.incidences) {
+        FamilyConfiguration c;
+        c.values = values;
+        c.corner = corner;
+        c.incidence = t;
+        c.below = below;
+        c.name = configurationName(parameters, values, t, below);
+        out.push_back(std::move(c));
+      }
+    }
+  return out;
+}
+
+FamilyResult checkBsdfFamily(const BsdfFamily& family,
+                             const std::vector<FamilyParameter>& parameters,
+                             const FamilyOptions& options) {
+  FamilyResult r;
+  r.parameters = parameters;
+  r.configurations = familyConfigurations(parameters, options);
+  r.level = options.level;
+  r.statisticalTests = static_cast<int>(r.configurations.size()) *
+                       (kStatisticalTestsPerCheck + options.check.delta.statisticalTests());
+  r.perTestLevel = sidakLevel(options.level, r.statisticalTests);
+  for (const FamilyConfiguration& c : r.configurations) {
+    BsdfCheckOptions check = options.check;
+    check.name = c.name;
+    check.significance = r.perTestLevel;
+    r.results.push_back(checkBsdf(family(c.values), c.wi(), check));
+  }
+  return r;
+}
+
+int FamilyResult::count(Verdict verdict) const {
+  return static_cast<int>(std::count_if(results.begin(), results.end(), [&](const CheckResult& c) {
+    return c.verdict() == verdict;
+  }));
+}
+
+Verdict FamilyResult::verdict() const {
+  if (count(Verdict::Failed) > 0) return Verdict::Failed;
+  if (count(Verdict::Inconclusive) > 0) return Verdict::Inconclusive;
+  return Verdict::Passed;
+}
+
+std::string FamilyResult::report() const {
+  std::string s = summary(*this) + "\n";
+  for (size_t i : reportOrder(*this)) {
+    const Row row = rowOf(*this, i);
+    s += fmt::format("  {:<12} {}", row.verdict, row.configuration);
+    if (!row.failed.empty()) s += "\n      " + row.failed;
+    if (!row.chiSquare.empty() && !results[i].passed()) s += "\n      chi-square " + row.chiSquare;
+    if (!row.defect.empty()) s += "\n      worst per-sample defect: " + row.defect;
+    if (results[i].passed() && !row.caught.empty())
+      s += fmt::format(": could have caught {} over 1/4 of the mass", row.caught);
+    s += "\n";
+  }
+  return s;
+}
+
+std::string FamilyResult::markdown() const {
+  std::string s = summary(*this) + "\n\n";
+  s += "| verdict | configuration | what failed, or why it could not run | chi-square | worst "
+       "per-sample defect | ε over 1/4 it could have caught |\n|---|---|---|---|---|---|\n";
+  auto cell = [](std::string text) {
+    std::string out;
+    for (char c : text) out += c == '|' ? std::string("\\|") : c == '\n' ? " " : std::string(1, c);
+    return out;
+  };
+  for (size_t i : reportOrder(*this)) {
+    const Row row = rowOf(*this, i);
+    s += fmt::format("| {} | {} | {} | {} | {} | {} |\n", row.verdict, cell(row.configuration),
+                     cell(row.failed), cell(row.chiSquare), cell(row.defect), row.caught);
+  }
+  return s;
+}
+
+std::string FamilyResult::json() const {
+  nlohmann::json j;
+  j["verdict"] = verdictName(verdict());
+  j["level"] = level;
+  j["per_test_level"] = perTestLevel;
+  j["statistical_tests"] = statisticalTests;
+  j["parameters"] = nlohmann::json::array();
+  for (const FamilyParameter& p : parameters)
+    j["parameters"].push_back(
+        {{"name", p.name}, {"lo", p.lo}, {"hi", p.hi}, {"logarithmic", p.logarithmic}});
+  j["configurations"] = nlohmann::json::array();
+  for (size_t i : reportOrder(*this)) {
+    const FamilyConfiguration& c = configurations[i];
+    const TestResult& t = results[i].test;
+    nlohmann::json values;
+    for (size_t k = 0; k < parameters.size(); ++k) values[parameters[k].name] = c.values[k];
+    nlohmann::json e{{"name", c.name},
+                     {"values", values},
+                     {"corner", c.corner},
+                     {"incidence_degrees", c.incidence},
+                     {"below", c.below},
+                     {"verdict", verdictName(results[i].verdict())},
+                     {"failures", results[i].failures()},
+                     {"inconclusive_reason", t.inconclusiveReason()},
+                     {"samples", t.samples},
+                     {"valid_samples", t.valid},
+                     {"seconds", t.seconds},
+                     {"worst_per_sample_defect", worstDefect(t.audit)}};
+    if (t.chiSquareRan())
+      e["chi_square"] = {{"statistic", t.chiSquare.statistic},
+                         {"dof", t.chiSquare.dof},
+                         {"p_value", t.chiSquare.pValue}};
+    if (t.chiSquarePower.ran())
+      e["density_error_quarter"] = t.chiSquarePower.densityError(kStatedMass);
+    j["configurations"].push_back(std::move(e));
+  }
+  return j.dump(1);
+}
+
+}  // namespace verity::chi2

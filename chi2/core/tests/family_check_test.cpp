@@ -1,0 +1,142 @@
+// The family check: its configurations (the corners of the parameter box, a Latin hypercube
+// inside it, every incidence), the level it splits over them, and a defect at one corner
+// found and reported first, on the Phong toy in its own types.
+#include <gtest/gtest.h>
+#include <verity/chi2/family_check.h>
+#include <verity/chi2/significance.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "phong_toy.h"
+
+namespace verity::chi2 {
+
+namespace {
+
+using phong_toy::Flaw;
+using phong_toy::Vec3;
+
+// The Phong toy of exponent values[0]; with `flawAbove` its pdf forgets its normalisation
+// (the BSDF's (n+2)/(2π) for the sampler's (n+1)/(2π), in pdf() and sample() alike) for
+// every exponent above it: a defect of the upper corner only, that the sampling still
+// follows the correct lobe.
+BsdfFamily phongFamily(double flawAbove) {
+  return [flawAbove](const std::vector<double>& values) {
+    const phong_toy::Phong p(values[0],
+                             values[0] > flawAbove ? Flaw::PdfNormalisation : Flaw::None);
+    return bsdfModel<Vec3>(
+        [p](const Vec3& wi, const BsdfUniforms& u) { return p.sample(wi, u.xy.x, u.xy.y); },
+        [p](const Vec3& wi, const Vec3& wo) { return p.eval(wi, wo); },
+        [p](const Vec3& wi, const Vec3& wo) { return p.pdf(wi, wo); });
+  };
+}
+
+// Two incidences and two interior points: six configurations of 2·10⁵ samples each.
+FamilyOptions smallFamily() {
+  FamilyOptions o;
+  o.incidences = {20, 60};
+  o.interiorPoints = 1;
+  o.check.detect.reset();
+  o.check.samples = 200'000;
+  return o;
+}
+
+const std::vector<FamilyParameter> kExponentRange{{"exponent", 2, 1000, true}};
+
+}  // namespace
+
+TEST(FamilyCheck, ConfigurationsAreTheCornersThenAStratifiedInteriorAtEveryIncidence) {
+  const std::vector<FamilyParameter> parameters{{"alpha", 1e-3, 1, true}, {"eta", 1.0001, 3}};
+  FamilyOptions o;
+  o.incidences = {0, 89.9, 90};
+  o.fromBelow = true;
+  o.interiorPoints = 10;
+  const std::vector<FamilyConfiguration> configs = familyConfigurations(parameters, o);
+  ASSERT_EQ(configs.size(), size_t(4 + 10) * 3 * 2);
+  // The four corners come first, at their exact ends, each at every incidence from above,
+  // then from below.
+  std::set<std::vector<double>> corners;
+  for (size_t i = 0; i < 4 * 6; ++i) {
+    EXPECT_TRUE(configs[i].corner) << configs[i].name;
+    corners.insert(configs[i].values);
+  }
+  EXPECT_EQ(corners,
+            (std::set<std::vector<double>>{{1e-3, 1.0001}, {1, 1.0001}, {1e-3, 3}, {1, 3}}));
+  EXPECT_FALSE(configs[0].below);
+  EXPECT_TRUE(configs[3].below);
+  EXPECT_EQ(configs[3].wi().z(), -1);
+  // Inside, each parameter's range cut into ten equal parts (alpha's in log) holds one point.
+  std::set<int> alphaStrata, etaStrata;
+  std::set<std::string> names;
+  for (const FamilyConfiguration& c : configs) {
+    EXPECT_TRUE(names.insert(c.name).second) << c.name;
+    if (c.corner || c.below || c.incidence != 0) continue;
+    alphaStrata.insert(int(std::floor(10 * (std::log(c.values[0]) - std::log(1e-3)) /
+                                      (std::log(1.0) - std::log(1e-3)))));
+    etaStrata.insert(int(std::floor(10 * (c.values[1] - 1.0001) / (3 - 1.0001))));
+  }
+  EXPECT_EQ(alphaStrata.size(), 10u);
+  EXPECT_EQ(etaStrata.size(), 10u);
+  EXPECT_EQ(*alphaStrata.begin(), 0);
+  EXPECT_EQ(*alphaStrata.rbegin(), 9);
+  // Exactly grazing: cos 90° in double.
+  EXPECT_EQ(configs[2].wi().z(), std::cos(std::numbers::pi / 2));
+}
+
+TEST(FamilyCheck, BadRangesAndOptionsAreRefusedByName) {
+  const auto refused = [](const std::vector<FamilyParameter>& p, const FamilyOptions& o,
+                          const std::string& says) {
+    try {
+      familyConfigurations(p, o);
+      ADD_FAILURE() << "accepted; expected an error saying " << says;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+  };
+  refused({{"alpha", 0, 1, true}}, {}, "parameter alpha: a logarithmic range needs lo > 0");
+  refused({{"eta", 3, 1}}, {}, "parameter eta: its range [3, 1]");
+  refused({}, {}, "no parameter");
+  FamilyOptions o;
+  o.incidences = {30, 95};
+  refused(kExponentRange, o, "incidences: 95");
+  o = {};
+  o.level = 1;
+  refused(kExponentRange, o, "level = 1");
+}
+
+TEST(FamilyCheck, ACorrectFamilyPassesAtTheFamilyLevel) {
+  const FamilyResult r = checkBsdfFamily(phongFamily(1e9), kExponentRange, smallFamily());
+  ASSERT_EQ(r.results.size(), 6u);
+  EXPECT_EQ(r.statisticalTests, 12);
+  EXPECT_DOUBLE_EQ(r.perTestLevel, sidakLevel(0.01, 12));
+  for (const CheckResult& c : r.results) EXPECT_DOUBLE_EQ(c.test.significance, r.perTestLevel);
+  EXPECT_TRUE(r.passed()) << r.report();
+  EXPECT_EQ(r.count(Verdict::Passed), 6);
+}
+
+TEST(FamilyCheck, ADefectAtOneCornerIsFoundAndReportedFirst) {
+  // Flawed above an exponent of 999: the upper corner (1000) only, at both incidences; the
+  // interior point, drawn inside [2, 1000] in log, lies below 999 (15.4 with the default seed).
+  const FamilyResult r = checkBsdfFamily(phongFamily(999), kExponentRange, smallFamily());
+  EXPECT_EQ(r.verdict(), Verdict::Failed);
+  EXPECT_EQ(r.count(Verdict::Failed), 2) << r.report();
+  for (size_t i = 0; i < r.results.size(); ++i)
+    EXPECT_EQ(r.results[i].passed(), r.configurations[i].values[0] < 999)
+        << r.configurations[i].name << "\n"
+        << r.results[i].report();
+  // The report, its Markdown and its JSON list the failures first.
+  const std::string report = r.report();
+  EXPECT_LT(report.find("FAILED       exponent=1000 at 20°"), report.find("PASSED"));
+  EXPECT_NE(report.find("pdf integral"), std::string::npos) << report;
+  const nlohmann::json j = nlohmann::json::parse(r.json());
+  EXPECT_EQ(j["verdict"], "FAILED");
+  EXPECT_EQ(j["configurations"][0]["verdict"], "FAILED");
+  EXPECT_EQ(j["configurations"][0]["values"]["exponent"], 1000);
+  EXPECT_EQ(j["configurations"][2]["verdict"], "PASSED");
+  const std::string markdown = r.markdown();
+  EXPECT_LT(markdown.find("| FAILED | exponent=1000"), markdown.find("| PASSED |"));
+}
+
+}  // namespace verity::chi2
