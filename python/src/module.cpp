@@ -10,6 +10,7 @@
 #include "check_options.h"
 #include "check_result_binding.h"
 #include "compare_binding.h"
+#include "family_binding.h"
 #include "python_bsdf.h"
 #include "python_warp.h"
 
@@ -80,7 +81,7 @@ PYBIND11_MODULE(verity, m) {
   using namespace verity::python;
   m.doc() =
       "Verity's statistical checks of BSDFs and warps written in NumPy (docs/python.md): "
-      "check_bsdf, check_warp; and compare, for two sets of renders as arrays.";
+      "check_bsdf, check_bsdf_family, check_warp; and compare, for two sets of renders as arrays.";
   // The library's argument errors are the caller's: ValueError.
   py::register_exception_translator([](std::exception_ptr p) {
     try {
@@ -91,6 +92,7 @@ PYBIND11_MODULE(verity, m) {
   });
   bindCheckResult(m);
   bindCompare(m);
+  bindFamily(m);
   // What a pdf callable is given per call by the quadrature: at least this many points but
   // for a computation's last refinement levels, at most 2^18.
   m.attr("DENSITY_BATCH_POINTS") = verity::chi2::kDensityBatchPoints;

@@ -1,0 +1,58 @@
+"""check_bsdf_family on the example's NumPy GGX: a defect planted at one corner of the roughness
+range is found there alone and listed first, bad parameters are refused by name, and the
+family's level is split over its tests.
+
+Level: the family's own, ALPHA = 1e-3 over its 12 statistical tests (Sidak), as test_bsdf.py's
+checks are at 1e-3 each. These tests are about behaviour, not power: 10^5 samples on the grid
+of cells; the planted error (the example's broken GGX) is found with chi-square p < 1e-30."""
+import json
+
+import pytest
+import verity
+
+from lobes import Ggx
+
+ALPHA = 1e-3
+FAST = dict(alpha=ALPHA, samples=100_000, cells="grid", incidences=[30, 60], interior_points=1)
+
+
+def ggx_family(broken_above):
+    def factory(alpha):
+        g = Ggx(alpha, broken=alpha > broken_above)
+        return g.sample, g.eval, g.pdf
+    return factory
+
+
+def test_a_defect_at_one_corner_is_found_there_and_listed_first():
+    r = verity.check_bsdf_family(ggx_family(0.99), {"alpha": (0.1, 1.0, "log")}, **FAST)
+    assert r.verdict == "FAILED" and not r.passed
+    configurations = r.configurations
+    assert len(configurations) == 6
+    for c in configurations:
+        assert c["result"].passed == (c["values"]["alpha"] < 0.99), str(c["result"])
+    assert r.per_test_level == pytest.approx(1 - (1 - ALPHA) ** (1 / 12))
+    report = str(r)
+    assert report.index("FAILED       alpha=1 at 30°") < report.index("PASSED")
+    data = json.loads(r.json())
+    assert data["configurations"][0]["verdict"] == "FAILED"
+    assert "chi-square" in data["configurations"][0]["failures"]
+    assert r.markdown().index("| FAILED |") < r.markdown().index("| PASSED |")
+
+
+def test_a_correct_family_passes():
+    r = verity.check_bsdf_family(ggx_family(2.0), {"alpha": (0.1, 1.0, "log")}, **FAST)
+    assert r.passed, str(r)
+
+
+def test_bad_parameters_and_keywords_are_refused_by_name():
+    with pytest.raises(ValueError, match="parameter alpha: a logarithmic range needs lo > 0"):
+        verity.check_bsdf_family(ggx_family(2.0), {"alpha": (0.0, 1.0, "log")}, **FAST)
+    with pytest.raises(ValueError, match=r"parameters\['alpha'\]"):
+        verity.check_bsdf_family(ggx_family(2.0), {"alpha": (0.1, 1.0, "square")}, **FAST)
+    with pytest.raises(TypeError, match="samples and detect exclude each other"):
+        verity.check_bsdf_family(ggx_family(2.0), {"alpha": (0.1, 1.0)},
+                                 **{**FAST, "detect": (0.02, 0.25)})
+    with pytest.raises(TypeError, match="unknown keyword argument 'wi'"):
+        verity.check_bsdf_family(ggx_family(2.0), {"alpha": (0.1, 1.0)}, **FAST, wi=(0, 0, 1))
+    with pytest.raises(TypeError, match="the factory must return"):
+        verity.check_bsdf_family(lambda alpha: None, {"alpha": (0.1, 1.0)}, **FAST)
