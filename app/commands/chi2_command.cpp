@@ -20,6 +20,7 @@
 #include "cli/threads_option.h"
 #include "cli/verdict_command.h"
 #include "commands/check_progress_display.h"
+#include "commands/chi2_sweep.h"
 #include "core/error.h"
 #include "core/thread_arena.h"
 
@@ -59,7 +60,18 @@ struct Chi2Args {
   std::string cells = "equal";  // chi2::parseCellLayout
   bool timings = false;
   int threads = 0;
+  // --sweep: the material as a family (chi2_sweep.h).
+  std::vector<std::string> sweeps;
+  std::vector<double> incidences{0, 30, 60, 85, 89.9, 90};
+  bool fromBelow = false;
+  int interiorPoints = 8;
 };
+
+// The index a delta refraction is held to: none within 10⁻³ of index matching, which the
+// renderer treats as a pass-through (rough_dielectric.h).
+std::optional<double> deltaRefractionIndex(double eta) {
+  return std::abs(eta - 1) > 1e-3 ? std::optional<double>(eta) : std::nullopt;
+}
 
 Vector3f parseVector(const std::string& text) {
   std::stringstream ss(text);
@@ -126,8 +138,7 @@ int runOne(const Chi2Args& a) {
     // (rough_dielectric.h), so only a larger contrast is held to Snell's law.
     const chi2::PhaseTimer timer(r.phases, chi2::Phase::DeltaLobes);
     chi2::DeltaCheckOptions d;
-    const double eta = subject.model().relativeIndex();
-    if (std::abs(eta - 1) > 1e-3) d.eta = eta;
+    d.eta = deltaRefractionIndex(subject.model().relativeIndex());
     delta = chi2::checkDeltaLobes(subject.model(), subject.localWi(), d, r.samples, r.significance,
                                   options.seed);
     r.deltaLobesChecked = true;
@@ -207,6 +218,35 @@ int seedTable(const Chi2Args& a) {
   return notPassed.empty() ? 0 : 1;
 }
 
+// --sweep: --alpha is the family's level, --seed draws the interior points, and each check
+// is sized by --detect, or draws --samples where given, else finds a 2% error over 1/4 of the
+// mass.
+int runSweep(const Chi2Args& a, bool samplesGiven) {
+  std::vector<SweptKey> sweeps;
+  for (const std::string& s : a.sweeps) sweeps.push_back(parseSweep(s));
+  chi2::FamilyOptions o;
+  o.incidences = a.incidences;
+  o.fromBelow = a.fromBelow;
+  o.interiorPoints = a.interiorPoints;
+  o.seed = a.seed;
+  o.level = a.alpha;
+  o.check.power = a.power;
+  o.check.cells = chi2::parseCellLayout(a.cells);
+  o.check.maxSamples = a.maxSamples;
+  if (a.detect) {
+    o.check.detect = chi2::DetectionTarget{*a.detect, a.mass, a.power};
+  } else if (samplesGiven) {
+    o.check.detect.reset();
+    o.check.samples = a.samples;
+  } else {
+    o.check.detect->power = a.power;
+  }
+  o.configure = [](const chi2::BsdfModel& model, chi2::BsdfCheckOptions& check) {
+    check.delta.eta = deltaRefractionIndex(model.relativeIndex());
+  };
+  return exitStatus(runChi2Sweep(a.material, sweeps, o, a.output));
+}
+
 }  // namespace
 
 void addChi2Command(CLI::App& app, const ProcessGroup& group) {
@@ -275,13 +315,44 @@ void addChi2Command(CLI::App& app, const ProcessGroup& group) {
                 "print the seconds each phase took (cells, quadrature, drawing, audit, binning, "
                 "delta lobes, statistics, figure) beside the floor: the time to draw and bin "
                 "the same samples on one thread");
-  cmd->add_flag("--seed-table", args->seedTable, "print the seed report's table next to ours");
+  CLI::Option* seedTableOption =
+      cmd->add_flag("--seed-table", args->seedTable, "print the seed report's table next to ours");
+  CLI::Option* sweep =
+      cmd->add_option("--sweep", args->sweeps,
+                      "check the material as a family: set KEY of --material to every corner of "
+                      "the box of the swept ranges and to stratified points inside it, each at "
+                      "every --incidences, at one family-wise level (--alpha); repeat for each "
+                      "key; -o PREFIX writes PREFIX.md, PREFIX.json and PREFIX.xml (JUnit)")
+          ->type_name("KEY=LO:HI[:log]")
+          ->excludes(seedTableOption);
+  for (const char* single : {"--incoming", "--normal", "--inside", "--timings"})
+    sweep->excludes(cmd->get_option(single));
+  cmd->add_option("--incidences", args->incidences,
+                  "with --sweep: the incidence angles from +z in degrees, 0 to 90")
+      ->delimiter(',')
+      ->check(realNumber(0, true, 90, true))
+      ->needs(sweep)
+      ->default_str("0,30,60,85,89.9,90");
+  cmd->add_flag("--from-below", args->fromBelow,
+                "with --sweep: every incidence from below the surface too (a material that "
+                "transmits)")
+      ->needs(sweep);
+  cmd->add_option("--interior-points", args->interiorPoints,
+                  "with --sweep: points inside the box besides its corners (a Latin hypercube "
+                  "drawn from --seed)")
+      ->check(wholeNumber(0, 10000))
+      ->needs(sweep)
+      ->capture_default_str();
   addThreadsOption(cmd, args->threads, MpiUse::OneProcess);
-  cmd->callback([args] {
+  cmd->callback([args, samples] {
     if (!args->seedTable && args->material.empty())
       throw CLI::RequiredError("--material (or --seed-table)");
+    const bool samplesGiven = samples->count() > 0;
     const int status = ThreadArena(args->threads).execute([&] {
-      return runVerdictCommand([&] { return args->seedTable ? seedTable(*args) : runOne(*args); });
+      return runVerdictCommand([&] {
+        if (args->seedTable) return seedTable(*args);
+        return args->sweeps.empty() ? runOne(*args) : runSweep(*args, samplesGiven);
+      });
     });
     if (status != kPassed) throw CLI::RuntimeError(status);
   });

@@ -191,3 +191,49 @@ TEST(Chi2Command, AnInconclusiveRunPrintsNoStatisticOfATestThatDidNotRun) {
 
 }  // namespace
 }  // namespace verity
+
+namespace verity {
+namespace {
+
+TEST(Chi2Command, SweepChecksTheMaterialAsAFamilyAndWritesItsReports) {
+  // A rough dielectric over its roughness (log) and index, from above and below at one
+  // incidence: 4 corners and 1 interior point, 10 configurations of 10⁵ samples.
+  const std::filesystem::path dir = testing::freshTestDirectory("verity-chi2-sweep-");
+  const std::string prefix = (dir / "family" / "glass").string();
+  const Printed p =
+      printed({"--material", R"({"type":"rough_dielectric"})", "--sweep", "alpha=0.05:1:log",
+               "--sweep", "ior=1.2:2", "--incidences", "45", "--from-below", "--interior-points",
+               "1", "--samples", "100000", "-o", prefix});
+  EXPECT_EQ(p.status, 0) << p.stdoutText << p.stderrText;
+  EXPECT_NE(p.stdoutText.find("10 configurations, 20 statistical tests at a family-wise level "
+                              "of 0.01"),
+            std::string::npos)
+      << p.stdoutText;
+  EXPECT_NE(p.stdoutText.find("PASSED       alpha=0.05 ior=1.2 at 45° from below"),
+            std::string::npos)
+      << p.stdoutText;
+  std::ifstream junit(prefix + ".xml");
+  const std::string xml(std::istreambuf_iterator<char>(junit), {});
+  EXPECT_NE(xml.find(R"(tests="10" failures="0" errors="0")"), std::string::npos) << xml;
+  EXPECT_TRUE(std::filesystem::exists(prefix + ".md"));
+  EXPECT_TRUE(std::filesystem::exists(prefix + ".json"));
+}
+
+TEST(Chi2Command, ASweepOutsideWhatTheLoaderAcceptsIsBadInput) {
+  // α's accepted range starts at 10⁻⁴: refused before any check, naming the key.
+  const Printed below = printed({"--material", R"({"type":"ggx"})", "--sweep", "alpha=1e-5:1:log"});
+  EXPECT_EQ(below.status, 2);
+  EXPECT_NE(below.stderrText.find("--sweep: alpha:"), std::string::npos) << below.stderrText;
+  EXPECT_NE(below.stderrText.find("expected a number in [0.0001, 4]"), std::string::npos)
+      << below.stderrText;
+  const Printed malformed = printed({"--material", R"({"type":"ggx"})", "--sweep", "alpha"});
+  EXPECT_EQ(malformed.status, 2);
+  EXPECT_NE(malformed.stderrText.find("expected KEY=LO:HI"), std::string::npos)
+      << malformed.stderrText;
+  const Printed single =
+      printed({"--material", R"({"type":"ggx"})", "--sweep", "alpha=0.1:1", "--incoming", "30"});
+  EXPECT_EQ(single.status, 2);
+}
+
+}  // namespace
+}  // namespace verity

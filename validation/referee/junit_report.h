@@ -1,6 +1,7 @@
-// JUnit XML as Jenkins and GitLab read it: one <testsuite> with one <testcase> per refereed
-// comparison. EQUIVALENT passes; DIFFER is a <failure>; INCONCLUSIVE and bad input (a render
-// command that failed) are an <error>, so that an undecided comparison never shows as passed.
+// JUnit XML as Jenkins and GitLab read it: one <testsuite> with one <testcase> per decision (a
+// refereed comparison, a configuration of `verity chi2 --sweep`). EQUIVALENT or PASSED passes;
+// DIFFER or FAILED is a <failure>; INCONCLUSIVE and bad input (a render command that failed) are
+// an <error>, so that an undecided case never shows as passed.
 #pragma once
 
 #include <filesystem>

@@ -205,10 +205,13 @@ FamilyResult checkBsdfFamily(const BsdfFamily& family,
                        (kStatisticalTestsPerCheck + options.check.delta.statisticalTests());
   r.perTestLevel = sidakLevel(options.level, r.statisticalTests);
   for (const FamilyConfiguration& c : r.configurations) {
+    const BsdfModel model = family(c.values);
     BsdfCheckOptions check = options.check;
     check.name = c.name;
     check.significance = r.perTestLevel;
-    r.results.push_back(checkBsdf(family(c.values), c.wi(), check));
+    if (!check.delta.eta && model.relativeIndex() != 1) check.delta.eta = model.relativeIndex();
+    if (options.configure) options.configure(model, check);
+    r.results.push_back(checkBsdf(model, c.wi(), check));
   }
   return r;
 }

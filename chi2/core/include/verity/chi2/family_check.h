@@ -45,6 +45,11 @@ struct FamilyOptions {
   // samples); the rest applies to every one. By default each is sized to find a 2% density
   // error over 1/4 of the mass.
   BsdfCheckOptions check = defaultCheck();
+  // Where check.delta.eta is unset, each configuration's delta refraction is held to its
+  // model's relative index (interiorIndex / exteriorIndex) unless that is 1. Where set, this
+  // is called last for each configuration with its model and check options, to adjust them
+  // (e.g. a renderer that turns an index within 10⁻³ of 1 into a pass-through).
+  std::function<void(const BsdfModel& model, BsdfCheckOptions& check)> configure;
 
   static BsdfCheckOptions defaultCheck();
 };

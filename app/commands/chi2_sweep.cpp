@@ -1,0 +1,134 @@
+#include "commands/chi2_sweep.h"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "chi2/suite/bsdf_subject.h"
+#include "chi2/suite/suite.h"
+#include "cli/output_paths.h"
+#include "core/error.h"
+#include "validation/referee/junit_report.h"
+
+namespace verity {
+
+namespace {
+
+double number(const std::string& text, const std::string& sweep, const char* what) {
+  double v = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (error != std::errc() || end != text.data() + text.size())
+    throw VerityError("--sweep", "",
+                      fmt::format("'{}': its {} '{}' is not a number", sweep, what, text));
+  return v;
+}
+
+// The material's JSON with the swept keys set to `values`.
+std::string materialAt(const nlohmann::json& base, const std::vector<SweptKey>& sweeps,
+                       const std::vector<double>& values) {
+  nlohmann::json m = base;
+  for (size_t i = 0; i < sweeps.size(); ++i) m[sweeps[i].key] = values[i];
+  return m.dump();
+}
+
+void writeText(const std::string& path, const std::string& text) {
+  prepareOutputFile(path, "-o");
+  std::ofstream out(path);
+  out << text;
+  if (!out) throw VerityError(path, "", "cannot be written");
+}
+
+std::vector<validation::JunitCase> junitCases(const chi2::FamilyResult& r) {
+  std::vector<validation::JunitCase> cases;
+  for (size_t i = 0; i < r.configurations.size(); ++i) {
+    const chi2::CheckResult& c = r.results[i];
+    validation::JunitCase j;
+    j.name = r.configurations[i].name;
+    j.seconds = c.test.seconds;
+    const chi2::Verdict v = c.verdict();
+    j.type = chi2::verdictName(v);
+    // FAILED is a failure; INCONCLUSIVE an error, never shown as passed.
+    j.outcome = v == chi2::Verdict::Passed   ? validation::JunitCase::Outcome::Passed
+                : v == chi2::Verdict::Failed ? validation::JunitCase::Outcome::Failure
+                                             : validation::JunitCase::Outcome::Error;
+    if (v != chi2::Verdict::Passed) {
+      std::string failures;
+      for (const std::string& f : c.failures()) failures += (failures.empty() ? "" : ", ") + f;
+      j.message = v == chi2::Verdict::Inconclusive ? c.test.inconclusiveReason() : failures;
+      j.details = c.report();
+    }
+    cases.push_back(std::move(j));
+  }
+  return cases;
+}
+
+}  // namespace
+
+SweptKey parseSweep(const std::string& text) {
+  const size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw VerityError("--sweep", "",
+                      fmt::format("'{}': expected KEY=LO:HI or KEY=LO:HI:log", text));
+  SweptKey s;
+  s.key = text.substr(0, eq);
+  std::vector<std::string> parts;
+  for (size_t start = eq + 1;;) {
+    const size_t colon = text.find(':', start);
+    parts.push_back(text.substr(start, colon - start));
+    if (colon == std::string::npos) break;
+    start = colon + 1;
+  }
+  if (parts.size() < 2 || parts.size() > 3 || (parts.size() == 3 && parts[2] != "log"))
+    throw VerityError("--sweep", "",
+                      fmt::format("'{}': expected KEY=LO:HI or KEY=LO:HI:log", text));
+  s.lo = number(parts[0], text, "lower end");
+  s.hi = number(parts[1], text, "upper end");
+  s.logarithmic = parts.size() == 3;
+  return s;
+}
+
+chi2::Verdict runChi2Sweep(const std::string& materialJson, const std::vector<SweptKey>& sweeps,
+                           const chi2::FamilyOptions& options, const std::string& outputPrefix) {
+  nlohmann::json base;
+  try {
+    base = nlohmann::json::parse(materialJson);
+  } catch (const nlohmann::json::exception& e) {
+    throw VerityError("--material", "", fmt::format("not JSON: {}", e.what()));
+  }
+  if (!base.is_object()) throw VerityError("--material", "", "expected a JSON object");
+  std::vector<chi2::FamilyParameter> box;
+  for (const SweptKey& s : sweeps) box.push_back({s.key, s.lo, s.hi, s.logarithmic});
+  try {
+    chi2::familyConfigurations(box, options);
+  } catch (const std::invalid_argument& e) {
+    throw VerityError("--sweep", "", e.what());
+  }
+  // Every configuration's material, read before any check: a value the loader refuses is
+  // bad input, named with its key and the configuration, not a failure found halfway.
+  for (const chi2::FamilyConfiguration& c : chi2::familyConfigurations(box, options)) {
+    try {
+      chi2::suite::makeMaterial(materialAt(base, sweeps, c.values));
+    } catch (const VerityError& e) {
+      throw VerityError("--sweep", e.jsonPath(),
+                        fmt::format("{} (at {}): {}", materialJson, c.name, e.problem()));
+    }
+  }
+  const chi2::FamilyResult r = chi2::checkBsdfFamily(
+      [&](const std::vector<double>& values) {
+        return chi2::materialModel(chi2::suite::makeMaterial(materialAt(base, sweeps, values)));
+      },
+      box, options);
+  std::cout << r.report();
+  if (!outputPrefix.empty()) {
+    writeText(outputPrefix + ".md", r.markdown());
+    writeText(outputPrefix + ".json", r.json());
+    validation::writeJunit(outputPrefix + ".xml", "verity chi2 " + materialJson, junitCases(r));
+    std::cout << fmt::format("  wrote {0}.md, {0}.json and {0}.xml (JUnit)\n", outputPrefix);
+  }
+  return r.verdict();
+}
+
+}  // namespace verity
