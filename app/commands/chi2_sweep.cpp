@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "chi2/suite/bsdf_subject.h"
+#include "chi2/suite/figure.h"
 #include "chi2/suite/suite.h"
 #include "cli/output_paths.h"
 #include "core/error.h"
@@ -123,10 +124,26 @@ chi2::Verdict runChi2Sweep(const std::string& materialJson, const std::vector<Sw
       box, options);
   std::cout << r.report();
   if (!outputPrefix.empty()) {
-    writeText(outputPrefix + ".md", r.markdown());
+    // The figures of the configurations that did not pass, PREFIX-<k> for the k-th in the
+    // family's order, listed under the Markdown table; the reports are written first, so that
+    // a figure that cannot be drawn (no matplotlib) loses none of them.
+    std::string figures;
+    std::vector<size_t> drawn;
+    for (size_t k = 0; k < r.results.size(); ++k)
+      if (!r.results[k].passed()) {
+        figures += fmt::format("- {}: {}-{}.png\n", r.configurations[k].name, outputPrefix, k);
+        drawn.push_back(k);
+      }
+    writeText(outputPrefix + ".md",
+              r.markdown() +
+                  (figures.empty() ? "" : "\nFigures of those that did not pass:\n\n" + figures));
     writeText(outputPrefix + ".json", r.json());
     validation::writeJunit(outputPrefix + ".xml", "verity chi2 " + materialJson, junitCases(r));
     std::cout << fmt::format("  wrote {0}.md, {0}.json and {0}.xml (JUnit)\n", outputPrefix);
+    for (size_t k : drawn)
+      std::cout << fmt::format(
+          "  figure of {}: {}\n", r.configurations[k].name,
+          chi2::writeFigure(r.results[k].test, fmt::format("{}-{}", outputPrefix, k)));
   }
   return r.verdict();
 }

@@ -22,7 +22,8 @@ SweptKey parseSweep(const std::string& text);
 
 // Checks the family of `materialJson` with each swept key set to its values; prints the report
 // and, with `outputPrefix`, writes PREFIX.md, PREFIX.json and PREFIX.xml (JUnit, one test case
-// per configuration). Returns the family's verdict.
+// per configuration), and the figure of each configuration that did not pass, PREFIX-<k>.png
+// for the k-th. Returns the family's verdict.
 chi2::Verdict runChi2Sweep(const std::string& materialJson, const std::vector<SweptKey>& sweeps,
                            const chi2::FamilyOptions& options, const std::string& outputPrefix);
 

@@ -219,6 +219,27 @@ TEST(Chi2Command, SweepChecksTheMaterialAsAFamilyAndWritesItsReports) {
   EXPECT_TRUE(std::filesystem::exists(prefix + ".json"));
 }
 
+TEST(Chi2Command, ASweepDrawsTheFigureOfEachConfigurationThatDidNotPass) {
+  // 50 samples are too few for a chi-square test: both configurations are INCONCLUSIVE, exit
+  // status 3, each an error in the JUnit file and a figure listed under the Markdown table.
+  const std::filesystem::path dir = testing::freshTestDirectory("verity-chi2-sweep-figures-");
+  const std::string prefix = (dir / "ggx").string();
+  const Printed p =
+      printed({"--material", R"({"type":"ggx"})", "--sweep", "alpha=0.1:0.2", "--incidences", "30",
+               "--interior-points", "0", "--samples", "50", "-o", prefix});
+  EXPECT_EQ(p.status, 3) << p.stdoutText << p.stderrText;
+  for (const char* k : {"-0", "-1"}) {
+    EXPECT_TRUE(std::filesystem::exists(prefix + k + ".png")) << k;
+    EXPECT_NE(p.stdoutText.find(prefix + k + ".png"), std::string::npos) << p.stdoutText;
+  }
+  std::ifstream junit(prefix + ".xml"), markdown(prefix + ".md");
+  const std::string xml(std::istreambuf_iterator<char>(junit), {});
+  EXPECT_NE(xml.find(R"(tests="2" failures="0" errors="2")"), std::string::npos) << xml;
+  const std::string md(std::istreambuf_iterator<char>(markdown), {});
+  EXPECT_NE(md.find("- alpha=0.2 at 30° from above: " + prefix + "-1.png"), std::string::npos)
+      << md;
+}
+
 TEST(Chi2Command, ASweepOutsideWhatTheLoaderAcceptsIsBadInput) {
   // α's accepted range starts at 10⁻⁴: refused before any check, naming the key.
   const Printed below = printed({"--material", R"({"type":"ggx"})", "--sweep", "alpha=1e-5:1:log"});
