@@ -15,12 +15,14 @@ constexpr std::chrono::milliseconds kQuiet{2000}, kRedraw{250};
 std::string describe(const chi2::CheckProgress& p) {
   const chi2::Phase phase = p.phase;
   if (phase == chi2::Phase::Count) return "";
+  const long long checks = p.checks;
+  const std::string of = checks > 0 ? fmt::format("check {} of {}, ", p.check.load(), checks) : "";
   if (phase == chi2::Phase::Drawing) {
     const long long samples = p.samples, drawn = p.drawn;
-    return fmt::format("drawing and auditing samples: {} of {} ({:.0f}%)", drawn, samples,
-                       samples > 0 ? 100.0 * drawn / samples : 0.0);
+    return of + fmt::format("drawing and auditing samples: {} of {} ({:.0f}%)", drawn, samples,
+                            samples > 0 ? 100.0 * drawn / samples : 0.0);
   }
-  return chi2::phaseName(phase);
+  return of + chi2::phaseName(phase);
 }
 
 }  // namespace

@@ -1,16 +1,19 @@
 #include "commands/chi2_sweep.h"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <charconv>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "chi2/suite/bsdf_subject.h"
 #include "chi2/suite/figure.h"
 #include "chi2/suite/suite.h"
 #include "cli/output_paths.h"
+#include "commands/check_progress_display.h"
 #include "core/error.h"
 #include "validation/referee/junit_report.h"
 
@@ -117,11 +120,16 @@ chi2::Verdict runChi2Sweep(const std::string& materialJson, const std::vector<Sw
                         fmt::format("{} (at {}): {}", materialJson, c.name, e.problem()));
     }
   }
+  chi2::CheckProgress progress;
+  chi2::FamilyOptions run = options;
+  run.check.progress = &progress;
+  std::optional<CheckProgressDisplay> display(std::in_place, progress, isatty(STDERR_FILENO));
   const chi2::FamilyResult r = chi2::checkBsdfFamily(
       [&](const std::vector<double>& values) {
         return chi2::materialModel(chi2::suite::makeMaterial(materialAt(base, sweeps, values)));
       },
-      box, options);
+      box, run);
+  display.reset();
   std::cout << r.report();
   if (!outputPrefix.empty()) {
     // The figures of the configurations that did not pass, PREFIX-<k> for the k-th in the

@@ -204,7 +204,10 @@ FamilyResult checkBsdfFamily(const BsdfFamily& family,
   r.statisticalTests = static_cast<int>(r.configurations.size()) *
                        (kStatisticalTestsPerCheck + options.check.delta.statisticalTests());
   r.perTestLevel = sidakLevel(options.level, r.statisticalTests);
+  if (CheckProgress* p = options.check.progress)
+    p->checks = static_cast<long long>(r.configurations.size());
   for (const FamilyConfiguration& c : r.configurations) {
+    if (CheckProgress* p = options.check.progress) ++p->check;
     const BsdfModel model = family(c.values);
     BsdfCheckOptions check = options.check;
     check.name = c.name;

@@ -155,7 +155,10 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   std::vector<double> drawSeconds(chunks), binSeconds(chunks);
   const PhaseClock samplingClock;
   reached(Phase::Drawing);
-  if (options.progress) options.progress->samples = r.samples;
+  if (options.progress) {
+    options.progress->samples = r.samples;
+    options.progress->drawn = 0;  // a run of several checks shares one progress
+  }
   tbb::parallel_for(0LL, chunks, [&](long long c) {
     const PhaseClock drawClock;
     pcg32 rng(options.seed, static_cast<uint64_t>(c));

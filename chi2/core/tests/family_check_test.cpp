@@ -107,8 +107,14 @@ TEST(FamilyCheck, BadRangesAndOptionsAreRefusedByName) {
 }
 
 TEST(FamilyCheck, ACorrectFamilyPassesAtTheFamilyLevel) {
-  const FamilyResult r = checkBsdfFamily(phongFamily(1e9), kExponentRange, smallFamily());
+  FamilyOptions o = smallFamily();
+  CheckProgress progress;
+  o.check.progress = &progress;
+  const FamilyResult r = checkBsdfFamily(phongFamily(1e9), kExponentRange, o);
   ASSERT_EQ(r.results.size(), 6u);
+  // The progress counted every configuration as it started.
+  EXPECT_EQ(progress.check.load(), 6);
+  EXPECT_EQ(progress.checks.load(), 6);
   EXPECT_EQ(r.statisticalTests, 12);
   EXPECT_DOUBLE_EQ(r.perTestLevel, sidakLevel(0.01, 12));
   for (const CheckResult& c : r.results) EXPECT_DOUBLE_EQ(c.test.significance, r.perTestLevel);

@@ -40,6 +40,8 @@ struct CheckOptions {
   // keeps its degrees of freedom; or the uniform grid, cheaper to integrate (Verity's own
   // sweep uses it: TestOptions::cells).
   CellLayout cells = CellLayout::EqualProbability;
+  // Where the check has got to, updated as it runs, for a display (phase_times.h); none if null.
+  CheckProgress* progress = nullptr;
 };
 
 struct CheckResult {

@@ -95,7 +95,8 @@ std::vector<FamilyConfiguration> familyConfigurations(
     const std::vector<FamilyParameter>& parameters, const FamilyOptions& options);
 
 // Checks every configuration, one after another, each on every core (checkBsdf): the result
-// does not depend on the number of threads.
+// does not depend on the number of threads. Where options.check.progress is set, its `check`
+// counts the configurations as they start, out of `checks`.
 FamilyResult checkBsdfFamily(const BsdfFamily& family,
                              const std::vector<FamilyParameter>& parameters,
                              const FamilyOptions& options = {});

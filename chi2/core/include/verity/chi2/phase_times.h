@@ -54,6 +54,9 @@ class PhaseClock {
 struct CheckProgress {
   std::atomic<Phase> phase{Phase::Count};
   std::atomic<long long> drawn{0}, samples{0};
+  // Of a run of several checks (a family, family_check.h): the one under way, from 1, and how
+  // many there are; 0 of 0 for a single check.
+  std::atomic<long long> check{0}, checks{0};
 };
 
 // Adds the seconds from its construction to its destruction to `times`' phase.
