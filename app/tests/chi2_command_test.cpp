@@ -240,6 +240,18 @@ TEST(Chi2Command, ASweepDrawsTheFigureOfEachConfigurationThatDidNotPass) {
       << md;
 }
 
+TEST(Chi2Command, ASweepChecksAFloatMaterialAtTheDirectionItSees) {
+  // GGX α 4 at η 1.01 from 30°: its refraction ends in a jump (D > 0 at the horizon) on a cone
+  // that the check computes from wi. Given wi in double, the material saw it rounded to float
+  // and ended its lobe 3·10⁻⁸ further, and with 2·10⁶ samples one landed beyond the check's edge,
+  // in a cell expecting 3·10⁻¹¹: FAILED outright. The family's wi is float, unit there. At the
+  // level of the 72-configuration family that found it (7.0·10⁻⁵ per test).
+  const Printed p = printed({"--material", R"({"type":"rough_dielectric"})", "--sweep", "alpha=4:4",
+                             "--sweep", "ior=1.01:1.01", "--incidences", "30", "--interior-points",
+                             "0", "--alpha", "0.000139568"});
+  EXPECT_EQ(p.status, 0) << p.stdoutText << p.stderrText;
+}
+
 TEST(Chi2Command, ASweepOutsideWhatTheLoaderAcceptsIsBadInput) {
   // α's accepted range starts at 10⁻⁴: refused before any check, naming the key.
   const Printed below = printed({"--material", R"({"type":"ggx"})", "--sweep", "alpha=1e-5:1:log"});

@@ -158,8 +158,13 @@ BsdfCheckOptions FamilyOptions::defaultCheck() {
 }
 
 Eigen::Vector3d FamilyConfiguration::wi() const {
+  // In single precision, unit there: a BSDF in float sees exactly the direction whose
+  // geometry (its mirror and refraction peaks, where refraction ends) the check computes. From
+  // the double direction it saw one 3·10⁻⁸ away, enough to move a refraction lobe of width 10⁻⁶
+  // (α 10⁻⁴, η 1.01) or the edge of one that ends with a jump (α 4, η 1.01).
   const double t = incidence * std::numbers::pi / 180;
-  return {std::sin(t), 0, below ? -std::cos(t) : std::cos(t)};
+  const Eigen::Vector3f w(float(std::sin(t)), 0, float(below ? -std::cos(t) : std::cos(t)));
+  return w.normalized().cast<double>();
 }
 
 std::vector<FamilyConfiguration> familyConfigurations(

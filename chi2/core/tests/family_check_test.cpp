@@ -81,8 +81,15 @@ TEST(FamilyCheck, ConfigurationsAreTheCornersThenAStratifiedInteriorAtEveryIncid
   EXPECT_EQ(etaStrata.size(), 10u);
   EXPECT_EQ(*alphaStrata.begin(), 0);
   EXPECT_EQ(*alphaStrata.rbegin(), 9);
-  // Exactly grazing: cos 90° in double.
-  EXPECT_EQ(configs[2].wi().z(), std::cos(std::numbers::pi / 2));
+  // Exactly grazing: cos 90° rounded to single precision, as a BSDF in float sees it.
+  EXPECT_EQ(configs[2].wi().z(), double(float(std::cos(std::numbers::pi / 2))));
+  EXPECT_GT(configs[2].wi().z(), 0);
+  // Every direction is float, and unit there.
+  for (const FamilyConfiguration& c : configs) {
+    const Eigen::Vector3d w = c.wi();
+    EXPECT_EQ(w.cast<float>().cast<double>(), w) << c.name;
+    EXPECT_NEAR(w.norm(), 1, 1e-7) << c.name;
+  }
 }
 
 TEST(FamilyCheck, BadRangesAndOptionsAreRefusedByName) {

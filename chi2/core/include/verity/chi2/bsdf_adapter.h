@@ -125,7 +125,8 @@ struct BsdfCheckOptions : CheckOptions {
   double reciprocityTolerance = kReciprocityTolerance;  // eval(wi,wo) against eval(wo,wi)
 };
 
-// One incident direction wi (local frame, normalised here). A model of components 0 (values
+// One incident direction wi (local frame; normalised here unless it is unit to within 10⁻⁷, a
+// direction normalised in single precision, which is kept as it is). A model of components 0 (values
 // sized at run time) is given the size of eval at wi's mirror direction, and every other
 // value is held to it.
 CheckResult checkBsdf(const BsdfModel& model, const Eigen::Vector3d& wi,

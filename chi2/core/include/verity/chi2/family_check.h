@@ -61,7 +61,8 @@ struct FamilyConfiguration {
   bool below = false;          // wi from below the surface
   std::string name;            // "alpha=0.001 eta=3 at 89.9° from above"
 
-  // The incident direction in the local frame: (sin θ, 0, ±cos θ).
+  // The incident direction in the local frame, (sin θ, 0, ±cos θ) rounded to single precision
+  // and unit there: what a BSDF in float sees is the direction the check's geometry uses.
   Eigen::Vector3d wi() const;
 };
 
