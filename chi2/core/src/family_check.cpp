@@ -127,9 +127,15 @@ Row rowOf(const FamilyResult& r, size_t i) {
     row.failed = t.inconclusiveReason();
   else if (!c.passed())
     row.failed = joined(c.failures());
-  if (t.chiSquareRan())
+  if (t.chiSquareRan()) {
     row.chiSquare = fmt::format("{:.4g} on {} dof, p = {:.3g}", t.chiSquare.statistic,
                                 t.chiSquare.dof, t.chiSquare.pValue);
+    // A failure that no statistic shows: a sample where the claimed density is zero.
+    if (t.chiSquare.outrightSamples > 0)
+      row.chiSquare += fmt::format(
+          "; {} sample(s) where the density is zero (cell {} expects {:.3g})",
+          t.chiSquare.outrightSamples, t.chiSquare.outrightCell, t.chiSquare.outrightExpected);
+  }
   row.defect = worstDefect(t.audit);
   if (t.chiSquarePower.ran())
     row.caught = fmt::format("{:.2g}%", 100 * t.chiSquarePower.densityError(kStatedMass));
@@ -299,7 +305,8 @@ std::string FamilyResult::json() const {
     if (t.chiSquareRan())
       e["chi_square"] = {{"statistic", t.chiSquare.statistic},
                          {"dof", t.chiSquare.dof},
-                         {"p_value", t.chiSquare.pValue}};
+                         {"p_value", t.chiSquare.pValue},
+                         {"samples_where_the_density_is_zero", t.chiSquare.outrightSamples}};
     if (t.chiSquarePower.ran())
       e["density_error_quarter"] = t.chiSquarePower.densityError(kStatedMass);
     j["configurations"].push_back(std::move(e));
