@@ -1,6 +1,7 @@
 #include "commands/chi2_sweep.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <unistd.h>
 
 #include <charconv>
@@ -59,9 +60,9 @@ std::vector<validation::JunitCase> junitCases(const chi2::FamilyResult& r) {
                 : v == chi2::Verdict::Failed ? validation::JunitCase::Outcome::Failure
                                              : validation::JunitCase::Outcome::Error;
     if (v != chi2::Verdict::Passed) {
-      std::string failures;
-      for (const std::string& f : c.failures()) failures += (failures.empty() ? "" : ", ") + f;
-      j.message = v == chi2::Verdict::Inconclusive ? c.test.inconclusiveReason() : failures;
+      j.message = v == chi2::Verdict::Inconclusive
+                      ? c.test.inconclusiveReason()
+                      : fmt::format("{}", fmt::join(c.failures(), ", "));
       j.details = c.report();
     }
     cases.push_back(std::move(j));
@@ -105,14 +106,15 @@ chi2::Verdict runChi2Sweep(const std::string& materialJson, const std::vector<Sw
   if (!base.is_object()) throw VerityError("--material", "", "expected a JSON object");
   std::vector<chi2::FamilyParameter> box;
   for (const SweptKey& s : sweeps) box.push_back({s.key, s.lo, s.hi, s.logarithmic});
+  std::vector<chi2::FamilyConfiguration> configurations;
   try {
-    chi2::familyConfigurations(box, options);
+    configurations = chi2::familyConfigurations(box, options);
   } catch (const std::invalid_argument& e) {
     throw VerityError("--sweep", "", e.what());
   }
   // Every configuration's material, read before any check: a value the loader refuses is
   // bad input, named with its key and the configuration, not a failure found halfway.
-  for (const chi2::FamilyConfiguration& c : chi2::familyConfigurations(box, options)) {
+  for (const chi2::FamilyConfiguration& c : configurations) {
     try {
       chi2::suite::makeMaterial(materialAt(base, sweeps, c.values));
     } catch (const VerityError& e) {

@@ -1,4 +1,5 @@
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <verity/chi2/family_check.h>
 #include <verity/chi2/significance.h>
 
@@ -21,13 +22,12 @@ void require(bool ok, const std::string& what) {
 void validate(const std::vector<FamilyParameter>& parameters, const FamilyOptions& options) {
   require(!parameters.empty(), "no parameter: a family needs at least one");
   for (const FamilyParameter& p : parameters) {
-    const std::string name = p.name.empty() ? "a parameter without a name" : p.name;
     require(!p.name.empty(), "every parameter needs a name");
     require(std::isfinite(p.lo) && std::isfinite(p.hi) && p.lo <= p.hi,
-            fmt::format("parameter {}: its range [{}, {}] must be finite with lo <= hi", name, p.lo,
-                        p.hi));
+            fmt::format("parameter {}: its range [{}, {}] must be finite with lo <= hi", p.name,
+                        p.lo, p.hi));
     require(!p.logarithmic || p.lo > 0,
-            fmt::format("parameter {}: a logarithmic range needs lo > 0 (it is {})", name, p.lo));
+            fmt::format("parameter {}: a logarithmic range needs lo > 0 (it is {})", p.name, p.lo));
   }
   // 2^d corners: more than 2^20 is no family anyone runs.
   require(parameters.size() <= 20,
@@ -96,12 +96,6 @@ std::string worstDefect(const Audit& audit) {
   return out;
 }
 
-std::string joined(const std::vector<std::string>& items) {
-  std::string s;
-  for (const std::string& item : items) s += (s.empty() ? "" : ", ") + item;
-  return s;
-}
-
 // The configurations in the report's order: failed, inconclusive, passed; each group in the
 // family's order.
 std::vector<size_t> reportOrder(const FamilyResult& r) {
@@ -126,7 +120,7 @@ Row rowOf(const FamilyResult& r, size_t i) {
   if (c.verdict() == Verdict::Inconclusive)
     row.failed = t.inconclusiveReason();
   else if (!c.passed())
-    row.failed = joined(c.failures());
+    row.failed = fmt::format("{}", fmt::join(c.failures(), ", "));
   if (t.chiSquareRan()) {
     row.chiSquare = fmt::format("{:.4g} on {} dof, p = {:.3g}", t.chiSquare.statistic,
                                 t.chiSquare.dof, t.chiSquare.pValue);
