@@ -23,6 +23,10 @@ void validate(const std::vector<FamilyParameter>& parameters, const FamilyOption
   require(!parameters.empty(), "no parameter: a family needs at least one");
   for (const FamilyParameter& p : parameters) {
     require(!p.name.empty(), "every parameter needs a name");
+    // A second range for one name would be a box of which the factory sees one side.
+    require(std::count_if(parameters.begin(), parameters.end(),
+                          [&](const FamilyParameter& q) { return q.name == p.name; }) == 1,
+            fmt::format("parameter {} is given more than once", p.name));
     require(std::isfinite(p.lo) && std::isfinite(p.hi) && p.lo <= p.hi,
             fmt::format("parameter {}: its range [{}, {}] must be finite with lo <= hi", p.name,
                         p.lo, p.hi));

@@ -105,6 +105,7 @@ TEST(FamilyCheck, BadRangesAndOptionsAreRefusedByName) {
   refused({{"alpha", 0, 1, true}}, {}, "parameter alpha: a logarithmic range needs lo > 0");
   refused({{"eta", 3, 1}}, {}, "parameter eta: its range [3, 1]");
   refused({}, {}, "no parameter");
+  refused({{"alpha", 0.1, 1}, {"alpha", 0.5, 2}}, {}, "parameter alpha is given more than once");
   FamilyOptions o;
   o.incidences = {30, 95};
   refused(kExponentRange, o, "incidences: 95");
