@@ -105,38 +105,55 @@ std::string worstDefect(const Audit& audit) {
 std::vector<size_t> reportOrder(const FamilyResult& r) {
   std::vector<size_t> order;
   for (Verdict v : {Verdict::Failed, Verdict::Inconclusive, Verdict::Passed})
-    for (size_t i = 0; i < r.results.size(); ++i)
-      if (r.results[i].verdict() == v) order.push_back(i);
+    for (size_t i = 0; i < r.configurations.size(); ++i)
+      if (r.verdictOf(i) == v) order.push_back(i);
   return order;
 }
 
 // One row's facts, shared by the text, Markdown and JSON forms.
 struct Row {
-  std::string verdict, configuration, failed, chiSquare, defect, caught;
+  std::string verdict, configuration, failed, statistic, defect, caught;
 };
 
 Row rowOf(const FamilyResult& r, size_t i) {
+  Row row;
+  row.verdict = verdictName(r.verdictOf(i));
+  row.configuration = r.configurations[i].name;
+  if (r.stochastic()) {
+    const StochasticCheck& c = r.stochasticResults[i];
+    if (c.verdict() == Verdict::Inconclusive)
+      row.failed = c.inconclusiveReason();
+    else if (!c.passed())
+      row.failed = fmt::format("{}", fmt::join(c.failures(), ", "));
+    double totalP = 1;
+    for (const WelchComparison& w : c.total) totalP = std::min(totalP, w.p);
+    row.statistic = fmt::format("albedo: smallest p = {:.3g}; cells: {} of {} rejected (Holm)",
+                                totalP, c.rejections, c.cellTests.size());
+    row.defect = worstDefect(c.audit);
+    if (std::isfinite(c.detectableTotal) && std::isfinite(c.detectableCell))
+      row.caught = fmt::format("{:.2g}% of the albedo, {:.2g}% of one cell's",
+                               100 * c.detectableTotal, 100 * c.detectableCell);
+    return row;
+  }
   const CheckResult& c = r.results[i];
   const TestResult& t = c.test;
-  Row row;
-  row.verdict = verdictName(c.verdict());
-  row.configuration = r.configurations[i].name;
   if (c.verdict() == Verdict::Inconclusive)
     row.failed = t.inconclusiveReason();
   else if (!c.passed())
     row.failed = fmt::format("{}", fmt::join(c.failures(), ", "));
   if (t.chiSquareRan()) {
-    row.chiSquare = fmt::format("{:.4g} on {} dof, p = {:.3g}", t.chiSquare.statistic,
+    row.statistic = fmt::format("chi-square {:.4g} on {} dof, p = {:.3g}", t.chiSquare.statistic,
                                 t.chiSquare.dof, t.chiSquare.pValue);
     // A failure that no statistic shows: a sample where the claimed density is zero.
     if (t.chiSquare.outrightSamples > 0)
-      row.chiSquare += fmt::format(
+      row.statistic += fmt::format(
           "; {} sample(s) where the density is zero (cell {} expects {:.3g})",
           t.chiSquare.outrightSamples, t.chiSquare.outrightCell, t.chiSquare.outrightExpected);
   }
   row.defect = worstDefect(t.audit);
   if (t.chiSquarePower.ran())
-    row.caught = fmt::format("{:.2g}%", 100 * t.chiSquarePower.densityError(kStatedMass));
+    row.caught = fmt::format("{:.2g}% over 1/4 of the mass",
+                             100 * t.chiSquarePower.densityError(kStatedMass));
   return row;
 }
 
@@ -146,11 +163,11 @@ std::string summary(const FamilyResult& r) {
     params += fmt::format("{}{} in [{:g}, {:g}]{}", params.empty() ? "" : ", ", p.name, p.lo, p.hi,
                           p.logarithmic ? " (log)" : "");
   return fmt::format(
-      "BSDF family of {}: {} configurations, {} statistical tests at a family-wise level of {:g} "
+      "BSDF family of {}{}: {} configurations, {} statistical tests at a family-wise level of {:g} "
       "(Sidak: {:.3g} per test); {} passed, {} failed, {} inconclusive: {}",
-      params, r.configurations.size(), r.statisticalTests, r.level, r.perTestLevel,
-      r.count(Verdict::Passed), r.count(Verdict::Failed), r.count(Verdict::Inconclusive),
-      verdictName(r.verdict()));
+      params, r.stochastic() ? " in the mean-weight mode" : "", r.configurations.size(),
+      r.statisticalTests, r.level, r.perTestLevel, r.count(Verdict::Passed),
+      r.count(Verdict::Failed), r.count(Verdict::Inconclusive), verdictName(r.verdict()));
 }
 
 }  // namespace
@@ -210,14 +227,23 @@ FamilyResult checkBsdfFamily(const BsdfFamily& family,
   r.parameters = parameters;
   r.configurations = familyConfigurations(parameters, options);
   r.level = options.level;
-  r.statisticalTests = static_cast<int>(r.configurations.size()) *
-                       (kStatisticalTestsPerCheck + options.check.delta.statisticalTests());
+  r.statisticalTests =
+      static_cast<int>(r.configurations.size()) *
+      (options.stochastic ? kStatisticalTestsPerStochasticCheck
+                          : kStatisticalTestsPerCheck + options.check.delta.statisticalTests());
   r.perTestLevel = sidakLevel(options.level, r.statisticalTests);
   if (CheckProgress* p = options.check.progress)
     p->checks = static_cast<long long>(r.configurations.size());
   for (const FamilyConfiguration& c : r.configurations) {
     if (CheckProgress* p = options.check.progress) ++p->check;
     const BsdfModel model = family(c.values);
+    if (options.stochastic) {
+      StochasticCheckOptions check = options.stochasticCheck;
+      check.name = c.name;
+      check.significance = r.perTestLevel;
+      r.stochasticResults.push_back(checkStochasticBsdf(model, c.wi(), check));
+      continue;
+    }
     BsdfCheckOptions check = options.check;
     check.name = c.name;
     check.significance = r.perTestLevel;
@@ -228,10 +254,15 @@ FamilyResult checkBsdfFamily(const BsdfFamily& family,
   return r;
 }
 
+Verdict FamilyResult::verdictOf(size_t configuration) const {
+  return stochastic() ? stochasticResults.at(configuration).verdict()
+                      : results.at(configuration).verdict();
+}
+
 int FamilyResult::count(Verdict verdict) const {
-  return static_cast<int>(std::count_if(results.begin(), results.end(), [&](const CheckResult& c) {
-    return c.verdict() == verdict;
-  }));
+  int n = 0;
+  for (size_t i = 0; i < configurations.size(); ++i) n += verdictOf(i) == verdict;
+  return n;
 }
 
 Verdict FamilyResult::verdict() const {
@@ -246,10 +277,10 @@ std::string FamilyResult::report() const {
     const Row row = rowOf(*this, i);
     s += fmt::format("  {:<12} {}", row.verdict, row.configuration);
     if (!row.failed.empty()) s += "\n      " + row.failed;
-    if (!row.chiSquare.empty() && !results[i].passed()) s += "\n      chi-square " + row.chiSquare;
+    const bool passed = verdictOf(i) == Verdict::Passed;
+    if (!row.statistic.empty() && !passed) s += "\n      " + row.statistic;
     if (!row.defect.empty()) s += "\n      worst per-sample defect: " + row.defect;
-    if (results[i].passed() && !row.caught.empty())
-      s += fmt::format(": could have caught {} over 1/4 of the mass", row.caught);
+    if (passed && !row.caught.empty()) s += ": could have caught " + row.caught;
     s += "\n";
   }
   return s;
@@ -257,8 +288,8 @@ std::string FamilyResult::report() const {
 
 std::string FamilyResult::markdown() const {
   std::string s = summary(*this) + "\n\n";
-  s += "| verdict | configuration | what failed, or why it could not run | chi-square | worst "
-       "per-sample defect | ε over 1/4 it could have caught |\n|---|---|---|---|---|---|\n";
+  s += "| verdict | configuration | what failed, or why it could not run | statistic | worst "
+       "per-sample defect | what it could have caught |\n|---|---|---|---|---|---|\n";
   auto cell = [](std::string text) {
     std::string out;
     for (char c : text) out += c == '|' ? std::string("\\|") : c == '\n' ? " " : std::string(1, c);
@@ -267,7 +298,7 @@ std::string FamilyResult::markdown() const {
   for (size_t i : reportOrder(*this)) {
     const Row row = rowOf(*this, i);
     s += fmt::format("| {} | {} | {} | {} | {} | {} |\n", row.verdict, cell(row.configuration),
-                     cell(row.failed), cell(row.chiSquare), cell(row.defect), row.caught);
+                     cell(row.failed), cell(row.statistic), cell(row.defect), row.caught);
   }
   return s;
 }
@@ -282,24 +313,45 @@ std::string FamilyResult::json() const {
   for (const FamilyParameter& p : parameters)
     j["parameters"].push_back(
         {{"name", p.name}, {"lo", p.lo}, {"hi", p.hi}, {"logarithmic", p.logarithmic}});
+  j["mode"] = stochastic() ? "mean-weight" : "chi-square";
   j["configurations"] = nlohmann::json::array();
   for (size_t i : reportOrder(*this)) {
     const FamilyConfiguration& c = configurations[i];
-    const TestResult& t = results[i].test;
     nlohmann::json values;
     for (size_t k = 0; k < parameters.size(); ++k) values[parameters[k].name] = c.values[k];
-    nlohmann::json e{{"name", c.name},
-                     {"values", values},
-                     {"corner", c.corner},
-                     {"incidence_degrees", c.incidence},
-                     {"below", c.below},
-                     {"verdict", verdictName(results[i].verdict())},
-                     {"failures", results[i].failures()},
-                     {"inconclusive_reason", t.inconclusiveReason()},
-                     {"samples", t.samples},
-                     {"valid_samples", t.valid},
-                     {"seconds", t.seconds},
-                     {"worst_per_sample_defect", worstDefect(t.audit)}};
+    nlohmann::json e{{"name", c.name},     {"values", values},
+                     {"corner", c.corner}, {"incidence_degrees", c.incidence},
+                     {"below", c.below},   {"verdict", verdictName(verdictOf(i))}};
+    if (stochastic()) {
+      const StochasticCheck& t = stochasticResults[i];
+      nlohmann::json albedo = nlohmann::json::array();
+      for (const WelchComparison& w : t.total)
+        albedo.push_back({{"sampled", w.sampled},
+                          {"sampled_error", w.sampledError},
+                          {"evaluated", w.evaluated},
+                          {"evaluated_error", w.evaluatedError},
+                          {"p_value", w.p}});
+      e.update({{"failures", t.failures()},
+                {"inconclusive_reason", t.inconclusiveReason()},
+                {"samples", t.samples},
+                {"hits", t.hits},
+                {"seconds", t.seconds},
+                {"worst_per_sample_defect", worstDefect(t.audit)},
+                {"albedo", albedo},
+                {"cells", t.cells},
+                {"cells_rejected", t.rejections},
+                {"detectable_albedo_error", t.detectableTotal},
+                {"detectable_cell_error", t.detectableCell}});
+      j["configurations"].push_back(std::move(e));
+      continue;
+    }
+    const TestResult& t = results[i].test;
+    e.update({{"failures", results[i].failures()},
+              {"inconclusive_reason", t.inconclusiveReason()},
+              {"samples", t.samples},
+              {"valid_samples", t.valid},
+              {"seconds", t.seconds},
+              {"worst_per_sample_defect", worstDefect(t.audit)}});
     if (t.chiSquareRan())
       e["chi_square"] = {{"statistic", t.chiSquare.statistic},
                          {"dof", t.chiSquare.dof},

@@ -16,94 +16,18 @@
 #include <verity/chi2/significance.h>
 #include <verity/chi2/stochastic_check.h>
 
-#include <array>
-#include <cmath>
-#include <memory>
-#include <numbers>
-#include <optional>
-#include <random>
-
+#include "layered_toy.h"
 #include "phong_toy.h"
-
-namespace verity::chi2::stochastic_check_test {
-
-// A spectrum as pbrt-v4's SampledSpectrum is seen by the adapter: four floats read through
-// [i], their number given by a ValueSize specialisation.
-struct Spectrum4 {
-  std::array<float, 4> values{};
-  float operator[](int i) const { return values[i]; }
-};
-
-}  // namespace verity::chi2::stochastic_check_test
-
-template <>
-struct verity::chi2::ValueSize<verity::chi2::stochastic_check_test::Spectrum4>
-    : std::integral_constant<int, 4> {};
 
 namespace verity::chi2::stochastic_check_test {
 
 namespace {
 
+using layered_toy::Flaw;
+using layered_toy::layeredModel;
+using layered_toy::Spectrum4;
 using phong_toy::Rgb;
 using phong_toy::Vec3;
-
-enum class Flaw { None, EvalLow, WeightLow, WeightSkewed, FourthEvalLow };
-
-// The toy's albedo times f: (0.8, 0.6, 0.4) in RGB, (0.8, 0.6, 0.4, 0.7·fourth) in four
-// components.
-template <class Value>
-Value tinted(double f, double fourth);
-template <>
-Rgb tinted<Rgb>(double f, double) {
-  return {float(0.8 * f), float(0.6 * f), float(0.4 * f)};
-}
-template <>
-Spectrum4 tinted<Spectrum4>(double f, double fourth) {
-  return {{float(0.8 * f), float(0.6 * f), float(0.4 * f), float(0.7 * f * fourth)}};
-}
-
-// A Lambertian whose eval and sample weight are each multiplied by a random factor uniform in
-// [0.5, 1.5) (mean 1) from its own generator, as a layered BSDF's random walk would return
-// them; a Flaw scales one of them by 0.98 (FourthEvalLow: eval's fourth component alone), or
-// the weight by 1.1 where wo.y > 0 and 0.9 where wo.y < 0 (the same total albedo for wi in the
-// xz plane).
-template <class Value>
-class LayeredToy {
- public:
-  LayeredToy(Flaw flaw, uint64_t seed)
-      : flaw_(flaw), rng_(std::make_shared<std::mt19937_64>(seed)) {}
-
-  Value eval(const Vec3& wi, const Vec3& wo) const {
-    if (wi.z <= 0 || wo.z <= 0) return {};
-    const double f = factor() / std::numbers::pi * (flaw_ == Flaw::EvalLow ? 0.98 : 1);
-    return tinted<Value>(f, flaw_ == Flaw::FourthEvalLow ? 0.98 : 1);
-  }
-  std::optional<SampledDirection<Vec3, Value>> sample(const Vec3& wi, double u0, double u1) const {
-    if (wi.z <= 0) return std::nullopt;
-    const double r = std::sqrt(u0), phi = 2 * std::numbers::pi * u1;
-    const Vec3 wo{r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1 - u0))};
-    if (wo.z <= 0) return std::nullopt;
-    double w = factor() * (flaw_ == Flaw::WeightLow ? 0.98 : 1);
-    if (flaw_ == Flaw::WeightSkewed) w *= wo.y > 0 ? 1.1 : 0.9;
-    return SampledDirection<Vec3, Value>{wo, tinted<Value>(w, 1), 0};
-  }
-
- private:
-  double factor() const { return 0.5 + std::uniform_real_distribution<double>()(*rng_); }
-
-  Flaw flaw_;
-  std::shared_ptr<std::mt19937_64> rng_;  // one generator for the model's copies
-};
-
-template <class Value = Rgb>
-BsdfModel layeredModel(Flaw flaw, const std::string& name) {
-  const LayeredToy<Value> toy(flaw, seedFromName(name + " toy"));
-  // No pdf: the mode does not use one.
-  return bsdfModel<Vec3>(
-      [toy](const Vec3& wi, const BsdfUniforms& u) { return toy.sample(wi, u.xy.x, u.xy.y); },
-      [toy](const Vec3& wi, const Vec3& wo) { return toy.eval(wi, wo); },
-      [](const Vec3&, const Vec3&) { return 0.0; });
-}
 
 constexpr int kCorrectChecks = 3;
 const double kLevel = sidakLevel(0.01, kStatisticalTestsPerStochasticCheck* kCorrectChecks);

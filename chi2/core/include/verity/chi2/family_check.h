@@ -9,6 +9,7 @@
 
 #include <verity/chi2/bsdf_adapter.h>
 #include <verity/chi2/check_result.h>
+#include <verity/chi2/stochastic_check.h>
 
 #include <cstdint>
 #include <functional>
@@ -50,6 +51,12 @@ struct FamilyOptions {
   // is called last for each configuration with its model and check options, to adjust them
   // (e.g. a renderer that turns an index within 10⁻³ of 1 into a pass-through).
   std::function<void(const BsdfModel& model, BsdfCheckOptions& check)> configure;
+  // Every configuration checked in the mean-weight mode instead (stochastic_check.h), for a
+  // BSDF whose eval and sample weight are random estimates (a layered BSDF evaluated by a
+  // random walk). `check` and `configure` then do not apply: `stochasticCheck` sets every
+  // configuration's samples, resolution and strata (its name, seed and level are set as above).
+  bool stochastic = false;
+  StochasticCheckOptions stochasticCheck;
 
   static BsdfCheckOptions defaultCheck();
 };
@@ -69,11 +76,16 @@ struct FamilyConfiguration {
 struct FamilyResult {
   std::vector<FamilyParameter> parameters;
   std::vector<FamilyConfiguration> configurations;
-  std::vector<CheckResult> results;  // one per configuration, in the same order
-  double level = 0;                  // family-wise
-  double perTestLevel = 0;           // Šidák's share of it for each statistical test
+  // One per configuration, in the same order: `results`, or in the mean-weight mode
+  // (FamilyOptions::stochastic) `stochasticResults`, the other then empty.
+  std::vector<CheckResult> results;
+  std::vector<StochasticCheck> stochasticResults;
+  double level = 0;         // family-wise
+  double perTestLevel = 0;  // Šidák's share of it for each statistical test
   int statisticalTests = 0;
 
+  bool stochastic() const { return !stochasticResults.empty(); }
+  Verdict verdictOf(size_t configuration) const;
   int count(Verdict verdict) const;
   // PASSED only when every configuration passed; FAILED when any failed; else INCONCLUSIVE.
   Verdict verdict() const;
