@@ -66,12 +66,18 @@ void bindCheckResult(py::module_& m) {
                 e["count"] = audit->count(defect);
                 e["first_example"] = audit->example(defect);
                 e["worst_example"] = audit->worstExample(defect);
+                if (!audit->worstExample(defect).empty()) {  // a comparison
+                  e["beyond_rounding"] = audit->beyondRounding(defect);
+                  e["worst_beyond_rounding_example"] = audit->worstBeyondRoundingExample(defect);
+                }
                 const std::string name = chi2::defectName(defect);
                 if (!d.contains(name)) d[name.c_str()] = e;
               }
             return d;
           },
-          "{defect name: {'count', 'first_example', 'worst_example'}} for each defect found")
+          "{defect name: {'count', 'first_example', 'worst_example'}} for each defect found; a "
+          "comparison (weight, sample pdf, reciprocity) adds 'beyond_rounding', how many of them "
+          "rounding the sampled direction does not explain, and the worst of those")
       .def_property_readonly("report", &CheckResult::report)
       .def("__str__", &CheckResult::report)
       .def("__repr__", [](const CheckResult& r) {

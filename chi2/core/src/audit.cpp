@@ -30,13 +30,26 @@ void Audit::record(Defect d, const std::string& example) {
   if (counts_[i]++ == 0) examples_[i] = example;
 }
 
-void Audit::record(Defect d, double deviation, const std::string& example) {
+namespace {
+
+// The larger deviation, the first of equal ones so that a merged audit does not depend on
+// timing.
+void keepWorst(double deviation, const std::string& example, double& worst, std::string& kept) {
+  if (deviation > worst || kept.empty()) {
+    worst = deviation;
+    kept = example;
+  }
+}
+
+}  // namespace
+
+void Audit::record(Defect d, double deviation, double rounding, const std::string& example) {
   record(d, example);
   const int i = static_cast<int>(d);
-  // The first of equal deviations, so that the merged audit does not depend on timing.
-  if (deviation > worst_[i] || worstExamples_[i].empty()) {
-    worst_[i] = deviation;
-    worstExamples_[i] = example;
+  keepWorst(deviation, example, worst_[i], worstExamples_[i]);
+  if (!(deviation <= rounding)) {
+    ++beyond_[i];
+    keepWorst(deviation, example, worstBeyond_[i], worstBeyondExamples_[i]);
   }
 }
 
@@ -45,12 +58,20 @@ void Audit::merge(const Audit& other) {
   for (int i = 0; i < kKinds; ++i) {
     if (counts_[i] == 0 && other.counts_[i] > 0) examples_[i] = other.examples_[i];
     counts_[i] += other.counts_[i];
-    if (!other.worstExamples_[i].empty() &&
-        (other.worst_[i] > worst_[i] || worstExamples_[i].empty())) {
-      worst_[i] = other.worst_[i];
-      worstExamples_[i] = other.worstExamples_[i];
-    }
+    if (!other.worstExamples_[i].empty())
+      keepWorst(other.worst_[i], other.worstExamples_[i], worst_[i], worstExamples_[i]);
+    beyond_[i] += other.beyond_[i];
+    if (!other.worstBeyondExamples_[i].empty())
+      keepWorst(other.worstBeyond_[i], other.worstBeyondExamples_[i], worstBeyond_[i],
+                worstBeyondExamples_[i]);
   }
+}
+
+bool Audit::onlyRounding() const {
+  if (clean()) return false;
+  for (int i = 0; i < kKinds; ++i)
+    if (counts_[i] && (worstExamples_[i].empty() || beyond_[i] > 0)) return false;
+  return true;
 }
 
 bool Audit::clean() const {
@@ -66,8 +87,16 @@ std::string Audit::describe() const {
     if (!counts_[i]) continue;
     s += fmt::format("\n    {}: {} time(s), first: {}", defectName(static_cast<Defect>(i)),
                      counts_[i], examples_[i]);
-    if (!worstExamples_[i].empty())
-      s += fmt::format("\n      worst |ratio - 1| = {:.3g}: {}", worst_[i], worstExamples_[i]);
+    if (worstExamples_[i].empty()) continue;
+    s += fmt::format("\n      worst |ratio - 1| = {:.3g}: {}", worst_[i], worstExamples_[i]);
+    if (beyond_[i] == 0)
+      s += fmt::format("\n      all {} within what rounding the sampled direction gives there",
+                       counts_[i]);
+    else
+      s += fmt::format(
+          "\n      {} of {} beyond what rounding gives there, the worst |ratio - 1| = "
+          "{:.3g}: {}",
+          beyond_[i], counts_[i], worstBeyond_[i], worstBeyondExamples_[i]);
   }
   return s;
 }

@@ -29,6 +29,11 @@ CheckResult checkBsdf(const BsdfModel& model, const Eigen::Vector3d& wi,
   setup.wi = std::fabs(wi.norm() - 1) <= 1e-7 ? wi : wi.normalized();
   setup.weightTolerance = options.weightTolerance;
   setup.reciprocityTolerance = options.reciprocityTolerance;
+  if (!(options.directionRounding >= 0 && options.directionRounding < 0.01))
+    throw std::invalid_argument(
+        fmt::format("BsdfCheckOptions::directionRounding = {}: must be in [0, 0.01)",
+                    options.directionRounding));
+  setup.directionRounding = options.directionRounding;
   BsdfModel sized = model;
   if (sized.components == 0) {
     const Eigen::Vector3d mirror(-setup.wi.x(), -setup.wi.y(), setup.wi.z());

@@ -166,6 +166,18 @@ void BsdfModelSubject::pdfBatch(const std::vector<Point2d>& points,
   model_.pdfBatch(setup_.wi, wos, values);
 }
 
+template <class Q>
+double BsdfModelSubject::roundingSpread(const Vector3d& wo, Q&& q) const {
+  const double reference = q(wo);
+  double spread = 0;
+  for (int signs = 0; signs < 8; ++signs) {
+    Vector3d w = wo;
+    for (int k = 0; k < 3; ++k) w[k] += (signs >> k & 1 ? 1 : -1) * setup_.directionRounding;
+    spread = std::max(spread, ratioDeviation(q(w), reference));
+  }
+  return spread;
+}
+
 template <class Values>
 std::optional<Point2d> BsdfModelSubject::audited(const BsdfUniforms& u,
                                                  const std::optional<DirectionSample>& s,
@@ -211,6 +223,7 @@ std::optional<Point2d> BsdfModelSubject::audited(const BsdfUniforms& u,
     const double tolerance = setup_.weightTolerance;
     if (!relativelyClose(s->pdf, p, tolerance))
       audit.record(Defect::SamplePdf, ratioDeviation(s->pdf, p),
+                   roundingSpread(wo, [&](const Vector3d& w) { return model_.pdf(wi, w); }),
                    fmt::format("sample pdf {} vs pdf() {} (ratio {:.6f}, tolerance {:g}) at {}",
                                s->pdf, p, s->pdf / p, tolerance, at()));
     const Eigen::ArrayXd expected =
@@ -223,11 +236,17 @@ std::optional<Point2d> BsdfModelSubject::audited(const BsdfUniforms& u,
                             ratioDeviation(s->weight[worst], expected[worst])))
         worst = c;
     if (worst >= 0)
-      audit.record(Defect::Weight, ratioDeviation(s->weight[worst], expected[worst]),
-                   fmt::format("weight {} vs eval*|cos|/pdf {} ({}ratio {:.6f}, "
-                               "tolerance {:g}) at {}",
-                               format(s->weight), format(expected), component(worst),
-                               s->weight[worst] / expected[worst], tolerance, at()));
+      audit.record(
+          Defect::Weight, ratioDeviation(s->weight[worst], expected[worst]),
+          roundingSpread(wo,
+                         [&](const Vector3d& w) {
+                           const double pw = model_.pdf(wi, w);
+                           return pw > 0 ? model_.eval(wi, w)[worst] * std::fabs(w.z()) / pw : 0.0;
+                         }),
+          fmt::format("weight {} vs eval*|cos|/pdf {} ({}ratio {:.6f}, "
+                      "tolerance {:g}) at {}",
+                      format(s->weight), format(expected), component(worst),
+                      s->weight[worst] / expected[worst], tolerance, at()));
   }
   if (setup_.checkReciprocity) checkReciprocity(wo, f, values.reversed(wo), audit);
   return sphereCoords(setup_.frame.toWorld(wo));
@@ -243,11 +262,15 @@ void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd
   const double tolerance = setup_.reciprocityTolerance;
   // The worst component of either comparison, where any is beyond the tolerance.
   double worst = -1;
+  int worstComponent = 0;
+  bool adjoint = false;  // the worst is evalAdjoint's, else eval(wi, wo)'s
   std::string example;
   for (int c = 0; c < f.size(); ++c) {
     const double a = f[c] * etaO * etaO, b = fr[c] * etaI * etaI;
     if (!relativelyClose(a, b, tolerance) && ratioDeviation(a, b) > worst) {
       worst = ratioDeviation(a, b);
+      worstComponent = c;
+      adjoint = false;
       example = fmt::format(
           "eval(wi,wo)*eta_o^2 = {:.7g} vs eval(wo,wi)*eta_i^2 = {:.7g} "
           "({}ratio {:.6f}, tolerance {:g}) {}",
@@ -255,13 +278,23 @@ void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd
     }
     if (!relativelyClose(fi[c], fr[c], tolerance) && ratioDeviation(fi[c], fr[c]) > worst) {
       worst = ratioDeviation(fi[c], fr[c]);
+      worstComponent = c;
+      adjoint = true;
       example = fmt::format(
           "importance eval(wi,wo) = {:.7g} vs radiance eval(wo,wi) = {:.7g} "
           "({}ratio {:.6f}, tolerance {:g}) {}",
           fi[c], fr[c], component(c), fi[c] / fr[c], tolerance, where());
     }
   }
-  if (worst >= 0) audit.record(Defect::Reciprocity, worst, example);
+  if (worst < 0) return;
+  // Either side of the comparison may be the one that rounding moves.
+  const int c = worstComponent;
+  const double forward = roundingSpread(wo, [&](const Vector3d& w) {
+    return adjoint && model_.evalAdjoint ? model_.evalAdjoint(wi, w)[c] : model_.eval(wi, w)[c];
+  });
+  const double backward =
+      roundingSpread(wo, [&](const Vector3d& w) { return model_.eval(w, wi)[c]; });
+  audit.record(Defect::Reciprocity, worst, std::max(forward, backward), example);
 }
 
 std::vector<double> BsdfModelSubject::jumpCones() const {

@@ -81,23 +81,42 @@ std::string configurationName(const std::vector<FamilyParameter>& parameters,
   return s + fmt::format(" at {:g}° from {}", incidence, below ? "below" : "above");
 }
 
-// The worst per-sample defect: the comparison furthest from its reference where one was
-// recorded, else the first defect's first example.
+// The worst per-sample defect: a comparison beyond what rounding the sampled direction gives
+// where there is one, else the comparison furthest from its reference (within rounding), else
+// the first defect's first example.
 std::string worstDefect(const Audit& audit) {
   std::string out;
   double worst = -1;
+  bool beyond = false;
   for (int d = 0; d < static_cast<int>(Defect::Count); ++d) {
     const Defect defect = static_cast<Defect>(d);
     if (audit.count(defect) == 0) continue;
-    const double w = audit.worst(defect);
-    if (out.empty() || w > worst) {
+    if (audit.worstExample(defect).empty()) {  // not a comparison
+      if (out.empty()) out = fmt::format("{}: {}", defectName(defect), audit.example(defect));
+      continue;
+    }
+    const bool b = audit.beyondRounding(defect) > 0;
+    const double w = b ? audit.worstBeyondRounding(defect) : audit.worst(defect);
+    if (std::make_pair(b, w) > std::make_pair(beyond, worst) || out.empty()) {
+      beyond = b;
       worst = w;
-      out = w > 0 ? fmt::format("{} (|ratio - 1| {:.3g}): {}", defectName(defect), w,
-                                audit.worstExample(defect))
-                  : fmt::format("{}: {}", defectName(defect), audit.example(defect));
+      out = fmt::format("{} {} (|ratio - 1| {:.3g}): {}", defectName(defect),
+                        b ? "beyond rounding" : "within rounding", w,
+                        b ? audit.worstBeyondRoundingExample(defect) : audit.worstExample(defect));
     }
   }
   return out;
+}
+
+// A configuration that failed on per-sample comparisons alone, each within what rounding the
+// sampled direction gives there.
+bool failedOnlyByRounding(const CheckResult& c) {
+  if (c.verdict() != Verdict::Failed || !c.test.audit.onlyRounding()) return false;
+  for (const std::string& f : c.failures())
+    if (f != defectName(Defect::Weight) && f != defectName(Defect::SamplePdf) &&
+        f != defectName(Defect::Reciprocity))
+      return false;
+  return true;
 }
 
 // The configurations in the report's order: failed, inconclusive, passed; each group in the
@@ -115,9 +134,17 @@ struct Row {
   std::string verdict, configuration, failed, statistic, defect, caught;
 };
 
+// "FAILED (rounding)" for a configuration that failed only within rounding.
+std::string verdictText(const FamilyResult& r, size_t i) {
+  const Verdict v = r.verdictOf(i);
+  return !r.stochastic() && failedOnlyByRounding(r.results[i])
+             ? fmt::format("{} (rounding)", verdictName(v))
+             : verdictName(v);
+}
+
 Row rowOf(const FamilyResult& r, size_t i) {
   Row row;
-  row.verdict = verdictName(r.verdictOf(i));
+  row.verdict = verdictText(r, i);
   row.configuration = r.configurations[i].name;
   if (r.stochastic()) {
     const StochasticCheck& c = r.stochasticResults[i];
@@ -125,10 +152,12 @@ Row rowOf(const FamilyResult& r, size_t i) {
       row.failed = c.inconclusiveReason();
     else if (!c.passed())
       row.failed = fmt::format("{}", fmt::join(c.failures(), ", "));
-    double totalP = 1;
-    for (const WelchComparison& w : c.total) totalP = std::min(totalP, w.p);
-    row.statistic = fmt::format("albedo: smallest p = {:.3g}; cells: {} of {} rejected (Holm)",
-                                totalP, c.rejections, c.cellTests.size());
+    if (c.verdict() != Verdict::Inconclusive) {  // else no test ran
+      double totalP = 1;
+      for (const WelchComparison& w : c.total) totalP = std::min(totalP, w.p);
+      row.statistic = fmt::format("albedo: smallest p = {:.3g}; cells: {} of {} rejected (Holm)",
+                                  totalP, c.rejections, c.cellTests.size());
+    }
     row.defect = worstDefect(c.audit);
     if (std::isfinite(c.detectableTotal) && std::isfinite(c.detectableCell))
       row.caught = fmt::format("{:.2g}% of the albedo, {:.2g}% of one cell's",
@@ -164,10 +193,12 @@ std::string summary(const FamilyResult& r) {
                           p.logarithmic ? " (log)" : "");
   return fmt::format(
       "BSDF family of {}{}: {} configurations, {} statistical tests at a family-wise level of {:g} "
-      "(Sidak: {:.3g} per test); {} passed, {} failed, {} inconclusive: {}",
+      "(Sidak: {:.3g} per test); {} passed, {} failed ({} of them only within rounding), {} "
+      "inconclusive: {}",
       params, r.stochastic() ? " in the mean-weight mode" : "", r.configurations.size(),
       r.statisticalTests, r.level, r.perTestLevel, r.count(Verdict::Passed),
-      r.count(Verdict::Failed), r.count(Verdict::Inconclusive), verdictName(r.verdict()));
+      r.count(Verdict::Failed), r.failedOnlyByRounding(), r.count(Verdict::Inconclusive),
+      verdictName(r.verdict()));
 }
 
 }  // namespace
@@ -257,6 +288,12 @@ FamilyResult checkBsdfFamily(const BsdfFamily& family,
 Verdict FamilyResult::verdictOf(size_t configuration) const {
   return stochastic() ? stochasticResults.at(configuration).verdict()
                       : results.at(configuration).verdict();
+}
+
+int FamilyResult::failedOnlyByRounding() const {
+  return static_cast<int>(std::count_if(results.begin(), results.end(), [](const CheckResult& c) {
+    return chi2::failedOnlyByRounding(c);
+  }));
 }
 
 int FamilyResult::count(Verdict verdict) const {

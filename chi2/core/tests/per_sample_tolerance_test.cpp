@@ -2,7 +2,9 @@
 // reciprocityTolerance) and the worst |ratio − 1| the report gives beside each defect's first
 // example: a Lambertian lobe whose weight, sample pdf or eval carries a relative error of a
 // few 10⁻⁴ (float rounding) fails at the defaults with that worst, passes with a tolerance
-// set to 10⁻³ or 10⁻², and reads apart from a bug (a worst of 0.5).
+// set to 10⁻³ or 10⁻², and reads apart from a bug (a worst of 0.5). A narrow lobe whose pdf()
+// takes sin²θ as 1 − cos²θ in single precision fails within what rounding the direction gives
+// there, and one whose pdf() is 2% off fails beyond it.
 //
 // Level: kCorrectChecks checks of two statistical tests each must pass, at a family-wise level
 // of 1% with Šidák's correction; those that must fail use the same level.
@@ -79,6 +81,35 @@ std::string failed(const CheckResult& r) {
   return s + "\n" + r.report();
 }
 
+// A narrow lobe about the normal: the unit disk's density exp(−r²/a²)/(π a²) (a ≪ 1, so its
+// tail beyond r = 1 is nil), lifted to the hemisphere, pdf = that·cos θo with r² = sin²θo.
+// sample() returns the exact pdf of its direction; pdf() computes sin²θo as 1 − cos²θo in
+// float (a cancellation whose condition near the normal is 1/sin²θo: at a = 10⁻³ rounding cos θo
+// alone moves r²/a² by some 0.1) or, as a bug, in double with a normalisation 2% high.
+enum class LobePdf { FloatCancellation, TwoPercentHigh };
+
+BsdfModel narrowLobe(LobePdf kind, double a) {
+  const auto disk = [a](double r2) { return std::exp(-r2 / (a * a)) / (std::numbers::pi * a * a); };
+  auto pdf = [=](const Vec3&, const Vec3& wo) {
+    if (wo.z <= 0) return 0.0;
+    if (kind == LobePdf::TwoPercentHigh) return 1.02 * disk(wo.x * wo.x + wo.y * wo.y) * wo.z;
+    const float z = static_cast<float>(wo.z);
+    return disk(1.0f - z * z) * wo.z;
+  };
+  return bsdfModel<Vec3>(
+      [=](const Vec3& wi, const BsdfUniforms& u) -> std::optional<SampledDirection<Vec3, double>> {
+        if (wi.z <= 0) return std::nullopt;
+        const double r = a * std::sqrt(-std::log(1 - u.xy.x)), phi = 2 * std::numbers::pi * u.xy.y;
+        if (r >= 1) return std::nullopt;
+        const Vec3 wo{r * std::cos(phi), r * std::sin(phi), std::sqrt(1 - r * r)};
+        return SampledDirection<Vec3, double>{wo, kAlbedo, disk(r * r) * wo.z};
+      },
+      [=](const Vec3&, const Vec3& wo) {
+        return wo.z > 0 ? kAlbedo * disk(wo.x * wo.x + wo.y * wo.y) : 0.0;
+      },
+      pdf);
+}
+
 }  // namespace
 
 TEST(PerSampleTolerance, DefaultsAreThoseOfTheSuite) {
@@ -150,18 +181,54 @@ TEST(PerSampleTolerance, FloatRoundingInReciprocityIsTolerated) {
 // Merged chunk by chunk, the audit keeps the first example and the largest deviation.
 TEST(PerSampleTolerance, TheAuditKeepsTheWorstDeviationAcrossMerges) {
   Audit a, b, c;
-  a.record(Defect::Weight, 0.1, "first");
-  b.record(Defect::Weight, 0.5, "worst");
-  c.record(Defect::Weight, 0.2, "later");
+  a.record(Defect::Weight, 0.1, 0.2, "first");  // within rounding
+  b.record(Defect::Weight, 0.5, 0.1, "worst");
+  c.record(Defect::Weight, 0.2, NAN, "later");  // rounding unknown: beyond
   a.merge(b);
   a.merge(c);
   EXPECT_EQ(a.count(Defect::Weight), 3);
   EXPECT_EQ(a.worst(Defect::Weight), 0.5);
   EXPECT_EQ(a.worstExample(Defect::Weight), "worst");
+  EXPECT_EQ(a.beyondRounding(Defect::Weight), 2);
+  EXPECT_EQ(a.worstBeyondRounding(Defect::Weight), 0.5);
+  EXPECT_FALSE(a.onlyRounding());
+  Audit within;
+  within.record(Defect::SamplePdf, 0.3, 0.4, "rounding");
+  EXPECT_TRUE(within.onlyRounding());
+  within.record(Defect::NotUnit, "not a comparison");
+  EXPECT_FALSE(within.onlyRounding());
   EXPECT_NE(a.describe().find("first: first"), std::string::npos) << a.describe();
   EXPECT_NE(a.describe().find("worst |ratio - 1| = 0.5: worst"), std::string::npos) << a.describe();
   EXPECT_EQ(ratioDeviation(0, 0), 0);
   EXPECT_EQ(ratioDeviation(1, 0), std::numeric_limits<double>::infinity());
+}
+
+// The same failed comparison, told apart by its cause: the float cancellation is within what
+// rounding the sampled direction (4 units in the last place of a float) gives its pdf() there;
+// the 2% error is beyond it, at every sample.
+TEST(PerSampleTolerance, RoundingThroughAnIllConditionedFormulaReadsApartFromABug) {
+  BsdfCheckOptions o;
+  o.name = "tolerance narrow lobe";
+  o.significance = kLevel;
+  o.samples = kSamples;
+  o.checkReciprocity = false;  // eval does not depend on wi
+  const CheckResult rounding =
+      checkBsdf(narrowLobe(LobePdf::FloatCancellation, 1e-3), Vec3{0, 0, 1}, o);
+  const Audit& r = rounding.test.audit;
+  EXPECT_GT(r.count(Defect::SamplePdf), kSamples / 10) << failed(rounding);
+  EXPECT_GT(r.worst(Defect::SamplePdf), 0.01) << failed(rounding);
+  EXPECT_EQ(r.beyondRounding(Defect::SamplePdf), 0) << failed(rounding);
+  EXPECT_EQ(r.beyondRounding(Defect::Weight), 0) << failed(rounding);
+  EXPECT_NE(rounding.report().find("within what rounding the sampled direction gives there"),
+            std::string::npos)
+      << failed(rounding);
+
+  const CheckResult bug = checkBsdf(narrowLobe(LobePdf::TwoPercentHigh, 1e-3), Vec3{0, 0, 1}, o);
+  const Audit& b = bug.test.audit;
+  EXPECT_GT(b.count(Defect::SamplePdf), 0) << failed(bug);
+  EXPECT_EQ(b.beyondRounding(Defect::SamplePdf), b.count(Defect::SamplePdf)) << failed(bug);
+  EXPECT_NEAR(b.worstBeyondRounding(Defect::SamplePdf), 0.02 / 1.02, 1e-6) << failed(bug);
+  EXPECT_FALSE(b.onlyRounding());
 }
 
 }  // namespace verity::chi2::per_sample_tolerance_test

@@ -123,11 +123,16 @@ struct BsdfCheckOptions : CheckOptions {
   // comparison that failed, beside its first example.
   double weightTolerance = kWeightTolerance;            // weight and sample pdf
   double reciprocityTolerance = kReciprocityTolerance;  // eval(wi,wo) against eval(wo,wi)
+  // How far rounding may move each component of a sampled direction (absolute; by default 4
+  // units in the last place of a float in [0.5, 1); 4·2⁻⁵³ for a BSDF in double). A failed
+  // comparison is "within rounding" where moving wo by this much moves its reference as far:
+  // the report then says so, and a family's table counts it apart (Audit::onlyRounding).
+  double directionRounding = kDirectionRounding;
 };
 
 // One incident direction wi (local frame; normalised here unless it is unit to within 10⁻⁷, a
-// direction normalised in single precision, which is kept as it is). A model of components 0 (values
-// sized at run time) is given the size of eval at wi's mirror direction, and every other
+// direction normalised in single precision, which is kept as it is). A model of components 0
+// (values sized at run time) is given the size of eval at wi's mirror direction, and every other
 // value is held to it.
 CheckResult checkBsdf(const BsdfModel& model, const Eigen::Vector3d& wi,
                       const BsdfCheckOptions& options);

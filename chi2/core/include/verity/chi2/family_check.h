@@ -87,6 +87,10 @@ struct FamilyResult {
   bool stochastic() const { return !stochasticResults.empty(); }
   Verdict verdictOf(size_t configuration) const;
   int count(Verdict verdict) const;
+  // The configurations that failed on per-sample comparisons alone (weight, sample pdf,
+  // reciprocity), each within what rounding the sampled direction gives there
+  // (BsdfCheckOptions::directionRounding): "FAILED (rounding)" in the reports.
+  int failedOnlyByRounding() const;
   // PASSED only when every configuration passed; FAILED when any failed; else INCONCLUSIVE.
   Verdict verdict() const;
   bool passed() const { return verdict() == Verdict::Passed; }
