@@ -5,12 +5,16 @@ configuration, or a check outside Verity with writeFigureData):
 
     python3 share/verity/plot_chi2.py PREFIX.json PREFIX.png
 
-Three panels: observed and expected counts per cell on ONE logarithmic colour scale (a
+Six panels. Above: observed and expected counts per cell on ONE logarithmic colour scale (a
 peaked lobe such as GGX with alpha 0.1 spans five decades, which a linear scale shows as a
 few bright cells on black), and the standardised difference (O - E)/sqrt(E), linear within
 three standard deviations and logarithmic beyond, so that both the noise of a correct
-sampler and the gross error of a broken one are readable. Grey cells lie outside the
-domain's support (nothing expected, nothing observed). Every cell is drawn as the rectangle
+sampler and the gross error of a broken one are readable. Below: the same as densities,
+counts over the cell's area (solid angle on the sphere) and the number of samples: the
+sampled density and the claimed one on one logarithmic scale, and their ratio O/E on a
+logarithmic scale about 1 (grey where a cell expects fewer than 5 samples). On cells of equal probability the counts are flat by design; the
+densities show the lobe, and the ratio where and by how much the sampler departs from it.
+Grey cells lie outside the domain's support (nothing expected, nothing observed). Every cell is drawn as the rectangle
 it is: strip i spans x_edges[i] to x_edges[i + 1] and is cut at its own y_edges[i]
 (equal-probability cells crowd where the density's mass lies).
 """
@@ -31,6 +35,7 @@ except ImportError as e:
 
 LINEAR_SIGMAS = 3.0  # the difference's scale is linear within this many standard deviations
 DECADES = 6  # the counts' scale spans at most this many decades below the largest count
+RATIO_SPAN = 2.0  # the ratio's scale spans at least 1/RATIO_SPAN to RATIO_SPAN
 
 
 def verdict(passed):
@@ -101,6 +106,14 @@ def draw_cells(ax, domain, values, **style):
     return mesh
 
 
+def cell_areas(domain):
+    """(ny, nx): strip i's cell j spans x_edges[i:i+2] by y_edges[i][j:j+2]; on the sphere
+    (phi, cos theta) that product is the cell's solid angle."""
+    x = np.array(domain["x_edges"])
+    y = np.array(domain["y_edges"])  # (nx, ny + 1)
+    return (np.diff(y, axis=1) * np.diff(x)[:, None]).T
+
+
 def main():
     if len(sys.argv) != 3:
         sys.exit("usage: plot_chi2.py DATA.json OUT.png")
@@ -130,26 +143,62 @@ def main():
     diff_map.set_bad("0.8")
     diff_norm = SymLogNorm(linthresh=LINEAR_SIGMAS, vmin=-limit, vmax=limit, base=10)
 
+    # Densities: counts over the cell's area and the number of samples.
+    scale = cell_areas(domain) * max(d["samples"], 1)
+    sampled, claimed = observed / scale, expected / scale
+    top_density = max(sampled.max(), claimed.max(), np.finfo(float).tiny)
+    densities = LogNorm(vmin=top_density * 10.0**-DECADES, vmax=top_density)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ratio = np.where(expected > 0, observed / expected, np.inf)
+    # A cell expecting fewer than 5 samples (pooled by the test) has no ratio worth a colour,
+    # unless it holds samples where nothing is claimed.
+    ratio[outside | ((expected > 0) & (expected < 5))] = np.nan
+    shown_ratio = ratio[np.isfinite(ratio) & (ratio > 0)]
+    span = max(RATIO_SPAN, np.exp(np.abs(np.log(shown_ratio)).max()) if shown_ratio.size else 0)
+    ratio_norm = LogNorm(vmin=1 / span, vmax=span)
+
     wide = domain["kind"] == "sphere"
-    fig, axes = plt.subplots(1, 3, figsize=(18, 5.6) if wide else (16, 6.2), layout="constrained")
-    for ax, values, name in ((axes[0], observed, "observed"), (axes[1], expected, "expected")):
+    fig, axes = plt.subplots(2, 3, figsize=(18, 10.4) if wide else (16, 11.6), layout="constrained")
+    for ax, values, name in ((axes[0, 0], observed, "observed"), (axes[0, 1], expected, "expected")):
         shown = np.where(outside, np.nan, np.maximum(values, counts.vmin / 2))
         image = draw_cells(ax, domain, shown, cmap=count_map, norm=counts)
         ax.set_title(f"{name} counts ({values.sum():,.0f})")
         label_axes(ax, domain)
-    bar = fig.colorbar(image, ax=axes[:2], shrink=0.9, extend="min")
+    bar = fig.colorbar(image, ax=axes[0, :2], shrink=0.9, extend="min")
     bar.set_label("samples per cell (log scale)")
 
-    image = draw_cells(axes[2], domain, z, cmap=diff_map, norm=diff_norm)
-    axes[2].set_title("(O − E)/√E: red where too many samples")
-    label_axes(axes[2], domain)
+    image = draw_cells(axes[0, 2], domain, z, cmap=diff_map, norm=diff_norm)
+    axes[0, 2].set_title("(O − E)/√E: red where too many samples")
+    label_axes(axes[0, 2], domain)
     cell = d["chi_square"]["outright_cell"]
     if d["chi_square"]["outright_samples"] and cell >= 0:
         i, j = cell % domain["nx"], cell // domain["nx"]
-        axes[2].plot((x[i] + x[i + 1]) / 2, (y[i][j] + y[i][j + 1]) / 2, "kx", markersize=10)
-    bar = fig.colorbar(image, ax=axes[2], shrink=0.9, ticks=difference_ticks(limit))
+        axes[0, 2].plot((x[i] + x[i + 1]) / 2, (y[i][j] + y[i][j + 1]) / 2, "kx", markersize=10)
+    bar = fig.colorbar(image, ax=axes[0, 2], shrink=0.9, ticks=difference_ticks(limit))
     bar.ax.set_yticklabels([f"{t:g}" for t in difference_ticks(limit)])
     bar.set_label(f"standard deviations (linear within ±{LINEAR_SIGMAS:g}, log beyond)")
+
+    unit = "per steradian" if wide else "per unit area"
+    for ax, values, name in ((axes[1, 0], sampled, "sampled"), (axes[1, 1], claimed, "claimed")):
+        shown = np.where(outside, np.nan, np.maximum(values, densities.vmin / 2))
+        image = draw_cells(ax, domain, shown, cmap=count_map, norm=densities)
+        ax.set_title(f"{name} density (counts / (N · cell area))")
+        label_axes(ax, domain)
+    bar = fig.colorbar(image, ax=axes[1, :2], shrink=0.9, extend="min")
+    bar.set_label(f"density {unit} (log scale)")
+
+    ratio_map = plt.get_cmap("RdBu_r").copy()
+    ratio_map.set_bad("0.8")
+    ratio_map.set_over("black")  # samples where nothing is expected
+    ratio_map.set_under(ratio_map(0.0))  # nothing where samples are expected
+    shown = np.clip(ratio, 1 / span, span)
+    shown[ratio == np.inf] = 2 * span
+    shown[ratio == 0] = 1 / (2 * span)
+    image = draw_cells(axes[1, 2], domain, shown, cmap=ratio_map, norm=ratio_norm)
+    axes[1, 2].set_title("sampled / claimed density: red where too dense")
+    label_axes(axes[1, 2], domain)
+    bar = fig.colorbar(image, ax=axes[1, 2], shrink=0.9, extend="both")
+    bar.set_label("O / E (log scale; black: samples where nothing is claimed)")
 
     colour = {"PASSED": "black", "FAILED": "darkred", "INCONCLUSIVE": "darkorange"}[d["verdict"]]
     fig.suptitle(title(d), fontsize=10, color=colour)
