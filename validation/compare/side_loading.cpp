@@ -21,8 +21,7 @@ bool hasVarianceChannels(const ImageChannels& image) {
 
 }  // namespace
 
-// RenderSetSide's reading, here with the other EXR reading so that render_set_side.cpp needs
-// no renderer (verity_compare_core).
+// RenderSetSide's reading, here with the other reading of a side's files.
 RenderSetSide RenderSetSide::load(const std::vector<std::filesystem::path>& files,
                                   const std::string& layer) {
   std::vector<std::string> names;
