@@ -17,7 +17,11 @@ import numpy as np
 import pytest
 import verity
 
-from exr_writer import write_exr
+try:
+    import OpenImageIO as oiio
+except ImportError as e:  # a failure, never a skip: CTest would report a pass
+    raise ImportError("test_compare.py writes its EXR files with OpenImageIO: install Debian's "
+                      "python3-openimageio (scripts/bootstrap does)") from e
 
 SIZE, RENDERS = 32, 8
 
@@ -29,6 +33,21 @@ def renders(name, count=RENDERS, bias_tile=None, bias=0.0):
         x, y = bias_tile
         sets[:, 16 * y:16 * (y + 1), 16 * x:16 * (x + 1), :] *= 1 + bias
     return sets
+
+
+def write_exr(path, image):
+    """Writes an (H, W, 3) array as 32-bit float R, G and B."""
+    buf = oiio.ImageBuf(np.ascontiguousarray(image, dtype=np.float32))
+    if not buf.write(str(path)):
+        raise OSError(f"{path}: {buf.geterror()}")
+
+
+def written(tmp_path, side, images):
+    """The renders as EXR files side0.exr, side1.exr, ... in tmp_path; their names."""
+    files = [str(tmp_path / f"{side}{i}.exr") for i in range(len(images))]
+    for path, image in zip(files, images):
+        write_exr(path, image)
+    return files
 
 
 def test_sets_of_the_same_image_agree():
@@ -70,19 +89,15 @@ def test_the_decision_is_the_commands_on_the_same_renders_as_exr(tmp_path, margi
     a = renders("command a").astype(np.float32)
     b = renders("command b", bias_tile=(0, 1), bias=0.03).astype(np.float32)
     b[2, 5, 7, 1] = np.nan  # left out of both sides, as the command does
-    files = {}
-    for side, images in (("a", a), ("b", b)):
-        files[side] = [str(tmp_path / f"{side}{i}.exr") for i in range(len(images))]
-        for path, image in zip(files[side], images):
-            write_exr(path, image)
+    files = {side: written(tmp_path, side, images) for side, images in (("a", a), ("b", b))}
     out = tmp_path / "compare.json"
     args = [command, "compare", "-a", *files["a"], "-b", *files["b"], "-o", str(out)]
     if margin:
         args += ["--margin", str(margin)]
-    status = subprocess.run(args, capture_output=True, text=True).returncode
+    run = subprocess.run(args, capture_output=True, text=True)
     mine = verity.compare(a, b, margin=margin)
-    assert status == {"AGREE": 0, "EQUIVALENT": 0, "DIFFER": 1, "EQUIVALENCE NOT SHOWN": 3}[
-        mine.verdict]
+    assert run.returncode == {"AGREE": 0, "EQUIVALENT": 0, "DIFFER": 1,
+                              "EQUIVALENCE NOT SHOWN": 3}[mine.verdict], run.stderr
     theirs, ours = json.loads(out.read_text()), mine.to_dict()
     for key in ("a", "b", "side_a", "side_b"):  # file names against a[0], ...
         theirs.pop(key), ours.pop(key)
