@@ -5,10 +5,15 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <filesystem>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "validation/compare/compare_decision.h"
+#include "validation/compare/distinct_files.h"
 #include "validation/compare/render_set_side.h"
+#include "validation/compare/side_loading.h"
 
 namespace verity::python {
 
@@ -33,9 +38,10 @@ std::pair<std::vector<std::string>, std::vector<ImageChannels>> renders(const py
                                                                         const py::array* reference,
                                                                         py::array* first) {
   if (py::isinstance<py::str>(side) || !py::isinstance<py::sequence>(side))
-    throw py::type_error(fmt::format(
-        "verity.compare: {} must be a sequence of (H, W, 3) arrays or an (N, H, W, 3) array",
-        name));
+    throw py::type_error(
+        fmt::format("verity.compare: {} must be a sequence of (H, W, 3) arrays, an (N, H, W, 3) "
+                    "array or a sequence of file names",
+                    name));
   if (py::isinstance<py::array>(side) && py::array(side).ndim() != 4)
     throw py::value_error(
         fmt::format("verity.compare: {} has shape {}; give a sequence of (H, W, 3) renders or an "
@@ -84,6 +90,43 @@ std::pair<std::vector<std::string>, std::vector<ImageChannels>> renders(const py
   return {std::move(labels), std::move(images)};
 }
 
+bool isFileName(const py::handle& item) {
+  return py::isinstance<py::str>(item) ||
+         py::isinstance(item, py::module_::import("os").attr("PathLike"));
+}
+
+// One side's file names when every item of `side` is a str or an os.PathLike; nothing when
+// none is (arrays, or no sequence: renders() says what is wrong). A side mixing both is refused.
+std::optional<std::vector<std::filesystem::path>> fileNames(const py::object& side,
+                                                            const std::string& name) {
+  if (isFileName(side))
+    throw py::type_error(fmt::format(
+        "verity.compare: {} is one file name, {}; give the side's renders as a sequence of them",
+        name, py::repr(side).cast<std::string>()));
+  if (py::isinstance<py::array>(side) || !py::isinstance<py::sequence>(side)) return {};
+  const py::sequence items = py::reinterpret_borrow<py::sequence>(side);
+  std::vector<std::filesystem::path> files;
+  std::optional<size_t> array, named;  // the first item that is not a file name, that is one
+  for (size_t r = 0; r < py::len(items); ++r) {
+    if (!isFileName(items[r])) {
+      if (!array) array = r;
+      continue;
+    }
+    if (!named) named = r;
+    const py::object text = py::module_::import("os").attr("fspath")(items[r]);
+    files.emplace_back(py::isinstance<py::bytes>(text) ? std::string(py::bytes(text))
+                                                       : text.cast<std::string>());
+  }
+  if (files.empty()) return {};
+  if (array)
+    throw py::type_error(fmt::format(
+        "verity.compare: {0} mixes file names and arrays ({0}[{1}] is a file name, {0}[{2}] "
+        "of type {3}); give a side as renders' file names or as arrays, not both",
+        name, *named, *array,
+        py::str(py::type::of(items[*array]).attr("__name__")).cast<std::string>()));
+  return files;
+}
+
 CompareDecision compare(const py::object& a, const py::object& b, int tile, double alpha,
                         const py::object& margin, double power) {
   validation::ComparisonOptions options;
@@ -95,17 +138,33 @@ CompareDecision compare(const py::object& a, const py::object& b, int tile, doub
     throw py::value_error(
         fmt::format("verity.compare: margin must be above 0 (or None), not {}", m));
   py::array firstA, firstB;
-  auto [labelsA, imagesA] = renders(a, "a", nullptr, &firstA);
-  auto [labelsB, imagesB] = renders(b, "b", &firstA, &firstB);
-  // The library's errors (VerityError: options, renders with the same pixels) are the caller's.
+  std::vector<std::string> labelsA, labelsB;
+  std::vector<ImageChannels> imagesA, imagesB;
+  const auto filesA = fileNames(a, "a");
+  if (!filesA) std::tie(labelsA, imagesA) = renders(a, "a", nullptr, &firstA);
+  const auto filesB = fileNames(b, "b");
+  if (!filesB) std::tie(labelsB, imagesB) = renders(b, "b", filesA ? nullptr : &firstA, &firstB);
+  // The library's errors (VerityError: options, files that cannot be read, renders with the
+  // same pixels) are the caller's.
   try {
     validation::checkCompareOptions(options, m);
-    // The sides keep only R, G and B and mark non-finite pixels, left out of both sides, as
-    // `verity compare` does with EXR files.
-    const validation::RenderSetSide sideA(std::move(labelsA), imagesA, "");
-    const validation::RenderSetSide sideB(std::move(labelsB), imagesB, "");
     py::gil_scoped_release release;
-    return validation::decideComparison(sideA, sideB, options, m);
+    // Files are read as `verity compare -a ... -b ...` reads them: all distinct, then each
+    // side (one file with variance channels, or a set of renders). Arrays make a set whose
+    // sides keep only R, G and B and mark non-finite pixels, left out of both sides, as the
+    // command does with EXR files.
+    std::vector<std::filesystem::path> all = filesA.value_or(std::vector<std::filesystem::path>{});
+    if (filesB) all.insert(all.end(), filesB->begin(), filesB->end());
+    validation::requireDistinctFiles(all);
+    const auto side = [](const auto& files, std::vector<std::string>& labels,
+                         const std::vector<ImageChannels>& images,
+                         const std::string& name) -> std::unique_ptr<validation::ComparisonSide> {
+      if (files) return validation::loadSide(*files, name, "");
+      return std::make_unique<validation::RenderSetSide>(std::move(labels), images, "");
+    };
+    const auto sideA = side(filesA, labelsA, imagesA, "A");
+    const auto sideB = side(filesB, labelsB, imagesB, "B");
+    return validation::decideComparison(*sideA, *sideB, options, m);
   } catch (const std::runtime_error& e) {
     throw py::value_error(std::string("verity.compare: ") + e.what());
   }
@@ -184,11 +243,15 @@ void bindCompare(py::module_& m) {
   m.def("compare", &compare, py::arg("a"), py::arg("b"), py::arg("tile") = 16,
         py::arg("alpha") = 0.01, py::arg("margin") = py::none(), py::arg("power") = 0.9,
         R"(Do two sets of renders estimate the same image? `verity compare -a ... -b ...` on
-arrays: a and b are sequences of (H, W, 3) float arrays (or (N, H, W, 3) arrays), each an
-independent render (its own seed), at least 2 per side. Per-tile Welch t-tests (tile x tile
-pixels, per channel) decided by Holm's procedure at family-wise level alpha; with margin, also
-equivalence within that relative margin of a (two one-sided tests per tile at alpha). Pixels
-with a non-finite value in any render are left out of both sides. Returns a Comparison.)");
+arrays or files: each of a and b is a sequence of (H, W, 3) float arrays (or an (N, H, W, 3)
+array), each an independent render (its own seed), at least 2 per side; or a sequence of EXR
+file names (str or os.PathLike), read as the command reads -a and -b (R, G and B found as it
+finds them; one file must have variance channels, as from `verity render --variance`). A side
+is arrays or names, not both; a file that cannot be read raises ValueError naming it. Per-tile
+Welch t-tests (tile x tile pixels, per channel) decided by Holm's procedure at family-wise
+level alpha; with margin, also equivalence within that relative margin of a (two one-sided
+tests per tile at alpha). Pixels with a non-finite value in any render are left out of both
+sides. Returns a Comparison.)");
 }
 
 }  // namespace verity::python

@@ -81,7 +81,8 @@ PYBIND11_MODULE(verity, m) {
   using namespace verity::python;
   m.doc() =
       "Verity's statistical checks of BSDFs and warps written in NumPy (docs/python.md): "
-      "check_bsdf, check_bsdf_family, check_warp; and compare, for two sets of renders as arrays.";
+      "check_bsdf, check_bsdf_family, check_warp; and compare, for two sets of renders as arrays "
+      "or EXR files.";
   // The library's argument errors are the caller's: ValueError.
   py::register_exception_translator([](std::exception_ptr p) {
     try {

@@ -7,9 +7,12 @@ tile is detected with power above 99.9% (t near 8 against a Bonferroni critical 
 4.5 at df 14; each test asserts the tile's detectable bias at 90% power is below 5%). The
 equivalence test (two one-sided tests per tile at 1%) within 5% passes with probability
 above 99.9% for equal sides, and within 1% can never pass at this noise. Seeds are fixed,
-from each test's name."""
+from each test's name. The same renders written as EXR files (by OpenImageIO, not by Verity)
+are given to verity.compare by name too, and must give the very decision."""
 import json
 import os
+import pathlib
+import re
 import subprocess
 import zlib
 
@@ -99,10 +102,36 @@ def test_the_decision_is_the_commands_on_the_same_renders_as_exr(tmp_path, margi
     assert run.returncode == {"AGREE": 0, "EQUIVALENT": 0, "DIFFER": 1,
                               "EQUIVALENCE NOT SHOWN": 3}[mine.verdict], run.stderr
     theirs, ours = json.loads(out.read_text()), mine.to_dict()
+    # The same files by name: the command's JSON and summary whole, file names included.
+    named = verity.compare(files["a"], [pathlib.Path(f) for f in files["b"]], margin=margin)
+    assert named.to_dict() == theirs
+    assert run.stdout.startswith(str(named)), (run.stdout, str(named))
     for key in ("a", "b", "side_a", "side_b"):  # file names against a[0], ...
         theirs.pop(key), ours.pop(key)
     assert ours == theirs
     assert mine.to_dict()["side_b"]["nonfinite_pixels"] == [0, 0, 1, 0, 0, 0, 0, 0]
+
+
+def test_file_names_decide_as_the_same_arrays(tmp_path):
+    a = renders("names a").astype(np.float32)
+    b = renders("names b", bias_tile=(1, 1), bias=0.05).astype(np.float32)
+    b[4, 20, 3, 0] = np.inf
+    names_a, names_b = written(tmp_path, "a", a), written(tmp_path, "b", b)
+    arrays = verity.compare(a, b, margin=0.05).to_dict()
+    assert arrays["differ"] and arrays["side_b"]["nonfinite_pixels"][4] == 1
+
+    def labels_apart(decision):
+        sides = {key: dict(decision.pop(key)) for key in ("side_a", "side_b")}
+        files = [side.pop("files") for side in sides.values()]
+        decision.pop("a"), decision.pop("b")
+        return decision, sides, files
+
+    common, sides, files = labels_apart(arrays)
+    for given, names in (((names_a, names_b), (names_a, names_b)),
+                         ((a, names_b), (files[0], names_b)),
+                         ((names_a, list(b)), (names_a, files[1]))):
+        assert labels_apart(verity.compare(*given, margin=0.05).to_dict()) == (
+            common, sides, list(names))
 
 
 @pytest.mark.parametrize("a, b, message", [
@@ -133,3 +162,24 @@ def test_bad_options_raise_value_error_naming_them():
         verity.compare(a, b, alpha=0.6, margin=0.05)
     with pytest.raises(ValueError, match="--tile"):
         verity.compare(a, b, tile=0)
+
+
+def test_a_file_that_cannot_be_read_raises_value_error_naming_it(tmp_path):
+    files = written(tmp_path, "a", renders("missing"))
+    missing = str(tmp_path / "missing.exr")
+    with pytest.raises(ValueError, match=re.escape(f"verity.compare: {missing}: no such file")):
+        verity.compare(files, files[:2] + [missing])
+    garbage = tmp_path / "garbage.exr"
+    garbage.write_text("not an image")
+    with pytest.raises(ValueError, match=re.escape(f"{garbage}: cannot read OpenEXR image")):
+        verity.compare([garbage, *files[1:]], renders("missing b"))
+
+
+def test_a_side_mixing_file_names_and_arrays_is_a_type_error(tmp_path):
+    images = renders("mixed")
+    files = written(tmp_path, "a", images[:2])
+    with pytest.raises(TypeError, match=r"b mixes file names and arrays \(b\[1\] is a file "
+                                        r"name, b\[0\] of type ndarray\)"):
+        verity.compare(images, [images[0], files[1]])
+    with pytest.raises(TypeError, match="a is one file name"):
+        verity.compare(files[0], images)
