@@ -47,6 +47,8 @@ void Audit::record(Defect d, double deviation, double rounding, const std::strin
   record(d, example);
   const int i = static_cast<int>(d);
   keepWorst(deviation, example, worst_[i], worstExamples_[i]);
+  if (std::isnan(rounding)) return;  // not classified
+  ++classified_[i];
   if (!(deviation <= rounding)) {
     ++beyond_[i];
     keepWorst(deviation, example, worstBeyond_[i], worstBeyondExamples_[i]);
@@ -60,6 +62,7 @@ void Audit::merge(const Audit& other) {
     counts_[i] += other.counts_[i];
     if (!other.worstExamples_[i].empty())
       keepWorst(other.worst_[i], other.worstExamples_[i], worst_[i], worstExamples_[i]);
+    classified_[i] += other.classified_[i];
     beyond_[i] += other.beyond_[i];
     if (!other.worstBeyondExamples_[i].empty())
       keepWorst(other.worstBeyond_[i], other.worstBeyondExamples_[i], worstBeyond_[i],
@@ -70,7 +73,8 @@ void Audit::merge(const Audit& other) {
 bool Audit::onlyRounding() const {
   if (clean()) return false;
   for (int i = 0; i < kKinds; ++i)
-    if (counts_[i] && (worstExamples_[i].empty() || beyond_[i] > 0)) return false;
+    if (counts_[i] && (worstExamples_[i].empty() || classified_[i] == 0 || beyond_[i] > 0))
+      return false;
   return true;
 }
 
@@ -89,14 +93,17 @@ std::string Audit::describe() const {
                      counts_[i], examples_[i]);
     if (worstExamples_[i].empty()) continue;
     s += fmt::format("\n      worst |ratio - 1| = {:.3g}: {}", worst_[i], worstExamples_[i]);
+    if (classified_[i] == 0) continue;
+    const std::string of = classified_[i] == counts_[i]
+                               ? fmt::format("{}", counts_[i])
+                               : fmt::format("{} classified (of {})", classified_[i], counts_[i]);
     if (beyond_[i] == 0)
-      s += fmt::format("\n      all {} within what rounding the sampled direction gives there",
-                       counts_[i]);
+      s += fmt::format("\n      all {} within what rounding the sampled direction gives there", of);
     else
       s += fmt::format(
           "\n      {} of {} beyond what rounding gives there, the worst |ratio - 1| = "
           "{:.3g}: {}",
-          beyond_[i], counts_[i], worstBeyond_[i], worstBeyondExamples_[i]);
+          beyond_[i], of, worstBeyond_[i], worstBeyondExamples_[i]);
   }
   return s;
 }

@@ -221,11 +221,15 @@ std::optional<Point2d> BsdfModelSubject::audited(const BsdfUniforms& u,
     audit.record(Defect::Negative, fmt::format("eval {} pdf() {} at {}", format(f), p, at()));
   else {
     const double tolerance = setup_.weightTolerance;
-    if (!relativelyClose(s->pdf, p, tolerance))
-      audit.record(Defect::SamplePdf, ratioDeviation(s->pdf, p),
-                   roundingSpread(wo, [&](const Vector3d& w) { return model_.pdf(wi, w); }),
+    if (!relativelyClose(s->pdf, p, tolerance)) {
+      const double deviation = ratioDeviation(s->pdf, p);
+      audit.record(Defect::SamplePdf, deviation,
+                   audit.classifies(Defect::SamplePdf, deviation)
+                       ? roundingSpread(wo, [&](const Vector3d& w) { return model_.pdf(wi, w); })
+                       : NAN,
                    fmt::format("sample pdf {} vs pdf() {} (ratio {:.6f}, tolerance {:g}) at {}",
                                s->pdf, p, s->pdf / p, tolerance, at()));
+    }
     const Eigen::ArrayXd expected =
         p > 0 ? Eigen::ArrayXd(f * std::fabs(wo.z()) / p) : Eigen::ArrayXd::Zero(f.size());
     // The worst component, where any is beyond the tolerance.
@@ -235,18 +239,19 @@ std::optional<Point2d> BsdfModelSubject::audited(const BsdfUniforms& u,
           (worst < 0 || ratioDeviation(s->weight[c], expected[c]) >
                             ratioDeviation(s->weight[worst], expected[worst])))
         worst = c;
-    if (worst >= 0)
-      audit.record(
-          Defect::Weight, ratioDeviation(s->weight[worst], expected[worst]),
-          roundingSpread(wo,
-                         [&](const Vector3d& w) {
-                           const double pw = model_.pdf(wi, w);
-                           return pw > 0 ? model_.eval(wi, w)[worst] * std::fabs(w.z()) / pw : 0.0;
-                         }),
-          fmt::format("weight {} vs eval*|cos|/pdf {} ({}ratio {:.6f}, "
-                      "tolerance {:g}) at {}",
-                      format(s->weight), format(expected), component(worst),
-                      s->weight[worst] / expected[worst], tolerance, at()));
+    if (worst >= 0) {
+      const double deviation = ratioDeviation(s->weight[worst], expected[worst]);
+      const auto weightAt = [&](const Vector3d& w) {
+        const double pw = model_.pdf(wi, w);
+        return pw > 0 ? model_.eval(wi, w)[worst] * std::fabs(w.z()) / pw : 0.0;
+      };
+      audit.record(Defect::Weight, deviation,
+                   audit.classifies(Defect::Weight, deviation) ? roundingSpread(wo, weightAt) : NAN,
+                   fmt::format("weight {} vs eval*|cos|/pdf {} ({}ratio {:.6f}, "
+                               "tolerance {:g}) at {}",
+                               format(s->weight), format(expected), component(worst),
+                               s->weight[worst] / expected[worst], tolerance, at()));
+    }
   }
   if (setup_.checkReciprocity) checkReciprocity(wo, f, values.reversed(wo), audit);
   return sphereCoords(setup_.frame.toWorld(wo));
@@ -287,6 +292,10 @@ void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd
     }
   }
   if (worst < 0) return;
+  if (!audit.classifies(Defect::Reciprocity, worst)) {
+    audit.record(Defect::Reciprocity, worst, NAN, example);
+    return;
+  }
   // Either side of the comparison may be the one that rounding moves.
   const int c = worstComponent;
   const double forward = roundingSpread(wo, [&](const Vector3d& w) {

@@ -2,10 +2,12 @@
 // negative, a weight that disagrees with eval·|cos|/pdf, a sample pdf that disagrees with
 // pdf(), a reciprocity violation, a sampled direction that is not a unit vector, a value of
 // the wrong size. Each kind keeps a count and its first example; the three comparisons keep
-// their worst |ratio − 1| too, with its example, and tell rounding from a bug: each failed
-// comparison comes with the |ratio − 1| that rounding the sampled direction alone gives its
+// their worst |ratio − 1| too, with its example, and tell rounding from a bug: a failed
+// comparison may come with the |ratio − 1| that rounding the sampled direction alone gives its
 // reference there (the reference's condition: a microfacet density from 1 − cos²θ near the
 // normal, a Fresnel factor at its critical angle), and one beyond that is "beyond rounding".
+// Measuring that costs 8 to 16 more evaluations, so a caller classifies the first few of each
+// audit and every new worst (classifies()), not all of a BSDF that fails everywhere.
 #pragma once
 
 #include <array>
@@ -29,6 +31,8 @@ inline constexpr double kWeightTolerance = 1e-4;
 // How far rounding may move each component of a unit direction: 4 units in the last place of
 // a float in [0.5, 1) (2⁻²⁴ each), what a few single-precision operations on it accumulate.
 inline constexpr double kDirectionRounding = 4.0 / (1 << 24);
+// The failed comparisons of each kind an audit classifies beside every new worst.
+inline constexpr long long kClassifiedPerAudit = 16;
 inline constexpr double kReciprocityTolerance = 1e-3;
 // Values below this are compared absolutely (weights and densities are O(1) or larger).
 inline constexpr double kAbsoluteFloor = 1e-6;
@@ -46,9 +50,16 @@ class Audit {
  public:
   void record(Defect d, const std::string& example);
   // A failed comparison whose |ratio − 1| is `deviation` (+∞ where the reference is 0), where
-  // rounding alone moves the reference by up to `rounding` (|ratio − 1|; NaN where unknown,
-  // which counts as beyond rounding).
+  // rounding alone moves the reference by up to `rounding` (|ratio − 1|), or NaN where it was
+  // not classified.
   void record(Defect d, double deviation, double rounding, const std::string& example);
+  // Whether a failed comparison of this deviation is to be classified: one of the first
+  // kClassifiedPerAudit, or a new worst (so the worst is always classified).
+  bool classifies(Defect d, double deviation) const {
+    const int i = static_cast<int>(d);
+    return classified_[i] < kClassifiedPerAudit || deviation > worst_[i] ||
+           worstExamples_[i].empty();
+  }
   void merge(const Audit& other);
   long long count(Defect d) const { return counts_[static_cast<int>(d)]; }
   // The first example recorded for d; "" when none was.
@@ -56,14 +67,16 @@ class Audit {
   // The largest deviation recorded for d, and where; 0 and "" when none was.
   double worst(Defect d) const { return worst_[static_cast<int>(d)]; }
   const std::string& worstExample(Defect d) const { return worstExamples_[static_cast<int>(d)]; }
-  // Of the failed comparisons of d, those beyond what rounding gives there, and the worst of
-  // them; 0, 0 and "" when none was.
+  // Of the failed comparisons of d, those classified, those of them beyond what rounding gives
+  // there, and the worst of those; 0, 0, 0 and "" when none was.
+  long long classified(Defect d) const { return classified_[static_cast<int>(d)]; }
   long long beyondRounding(Defect d) const { return beyond_[static_cast<int>(d)]; }
   double worstBeyondRounding(Defect d) const { return worstBeyond_[static_cast<int>(d)]; }
   const std::string& worstBeyondRoundingExample(Defect d) const {
     return worstBeyondExamples_[static_cast<int>(d)];
   }
-  // Every defect is a failed comparison within rounding (and there is one).
+  // Every defect is a failed comparison, every one classified within rounding, the worst among
+  // them (and there is one).
   bool onlyRounding() const;
   bool clean() const;
   std::string describe() const;
@@ -78,7 +91,7 @@ class Audit {
   std::array<std::string, kKinds> examples_{};
   std::array<double, kKinds> worst_{};
   std::array<std::string, kKinds> worstExamples_{};
-  std::array<long long, kKinds> beyond_{};
+  std::array<long long, kKinds> classified_{}, beyond_{};
   std::array<double, kKinds> worstBeyond_{};
   std::array<std::string, kKinds> worstBeyondExamples_{};
   double seconds_ = 0;
