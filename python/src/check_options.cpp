@@ -11,9 +11,13 @@ namespace verity::python {
 
 const std::vector<std::string> kCheckKeywords = {
     "name", "alpha", "samples", "seed", "resolution", "power", "detect", "max_samples", "cells"};
-const std::vector<std::string> kBsdfKeywords = {"weight_tolerance",    "reciprocity_tolerance",
-                                                "reciprocity",         "eta",
-                                                "direction_tolerance", "expect"};
+const std::vector<std::string> kBsdfKeywords = {"weight_tolerance",
+                                                "reciprocity_tolerance",
+                                                "direction_rounding",
+                                                "reciprocity",
+                                                "eta",
+                                                "direction_tolerance",
+                                                "expect"};
 
 namespace {
 
@@ -81,6 +85,7 @@ void readBsdfOptions(const py::kwargs& kw, const std::string& check, chi2::BsdfC
   readCheckOptions(kw, check, o);
   read(kw, "weight_tolerance", o.weightTolerance);
   read(kw, "reciprocity_tolerance", o.reciprocityTolerance);
+  read(kw, "direction_rounding", o.directionRounding);
   read(kw, "reciprocity", o.checkReciprocity);
   double eta = 0;
   if (read(kw, "eta", eta)) o.delta.eta = eta;

@@ -67,6 +67,7 @@ void bindCheckResult(py::module_& m) {
                 e["first_example"] = audit->example(defect);
                 e["worst_example"] = audit->worstExample(defect);
                 if (!audit->worstExample(defect).empty()) {  // a comparison
+                  e["classified"] = audit->classified(defect);
                   e["beyond_rounding"] = audit->beyondRounding(defect);
                   e["worst_beyond_rounding_example"] = audit->worstBeyondRoundingExample(defect);
                 }
@@ -76,8 +77,9 @@ void bindCheckResult(py::module_& m) {
             return d;
           },
           "{defect name: {'count', 'first_example', 'worst_example'}} for each defect found; a "
-          "comparison (weight, sample pdf, reciprocity) adds 'beyond_rounding', how many of them "
-          "rounding the sampled direction does not explain, and the worst of those")
+          "comparison (weight, sample pdf, reciprocity) adds 'classified', 'beyond_rounding' (how "
+          "many of those classified rounding the sampled direction does not explain) and the "
+          "worst of those")
       .def_property_readonly("report", &CheckResult::report)
       .def("__str__", &CheckResult::report)
       .def("__repr__", [](const CheckResult& r) {

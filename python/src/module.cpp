@@ -108,7 +108,9 @@ PYBIND11_MODULE(verity, m) {
 Local frame: normal +z, wi and wo pointing away from the surface, wo.z < 0 transmits.
 Keywords: wi and alpha (required), name, samples, seed, resolution, power,
 detect=(density_error, mass), max_samples, cells ('equal' or 'grid'), weight_tolerance,
-reciprocity_tolerance, reciprocity, eta, direction_tolerance,
+reciprocity_tolerance, direction_rounding (4 float ulps: how far rounding may move a sampled
+direction, to tell a failed comparison within rounding from one beyond), reciprocity, eta,
+direction_tolerance,
 expect={'reflection'|'refraction'|'pass-through': (share or None, albedo or None)},
 exterior_index and interior_index (1: the indices of refraction above and below).
 Returns a Result.)");

@@ -65,6 +65,9 @@ def test_a_weight_error_is_reported_with_its_first_example():
     defect = r.defects["weight != eval*cos/pdf"]
     assert defect["count"] == r.valid
     assert "ratio 1.01" in defect["first_example"] and "wo=" in defect["first_example"]
+    # A Lambertian lobe does not depend on where rounding moves wo: the error is beyond it.
+    assert defect["classified"] > 0
+    assert defect["beyond_rounding"] == defect["classified"]
 
 
 def test_a_pdf_that_disagrees_with_the_sample_pdf_is_reported():

@@ -74,6 +74,8 @@ def test_options_are_checked_by_name():
         run(cells="hexagons")
     with pytest.raises(ValueError, match="weightTolerance"):
         run(weight_tolerance=2)
+    with pytest.raises(ValueError, match="directionRounding"):
+        run(direction_rounding=-1)
     with pytest.raises(TypeError, match="samples"):
         run(samples="many")
 
