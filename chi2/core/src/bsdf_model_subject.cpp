@@ -166,15 +166,47 @@ void BsdfModelSubject::pdfBatch(const std::vector<Point2d>& points,
   model_.pdfBatch(setup_.wi, wos, values);
 }
 
+namespace {
+
+// directionRounding, given for a component in [0.5, 1), scaled to the binade of v: the same
+// number of units in its last place.
+double roundingOf(double v, double directionRounding) {
+  int exponent = 0;
+  std::frexp(v, &exponent);  // |v| in [2^(e-1), 2^e)
+  return v == 0 ? 0 : std::ldexp(directionRounding, exponent);
+}
+
+}  // namespace
+
 template <class Q>
 double BsdfModelSubject::roundingSpread(const Vector3d& wo, Q&& q) const {
   const double reference = q(wo);
   double spread = 0;
+  const auto probe = [&](const Vector3d& w) {
+    spread = std::max(spread, ratioDeviation(q(w), reference));
+  };
+  Vector3d step;
+  for (int k = 0; k < 3; ++k) step[k] = roundingOf(wo[k], setup_.directionRounding);
+  // Every component moved by its rounding, not renormalised: a direction rounded to float is
+  // unit only to its rounding.
   for (int signs = 0; signs < 8; ++signs) {
     Vector3d w = wo;
-    for (int k = 0; k < 3; ++k) w[k] += (signs >> k & 1 ? 1 : -1) * setup_.directionRounding;
-    spread = std::max(spread, ratioDeviation(q(w), reference));
+    for (int k = 0; k < 3; ++k) w[k] += (signs >> k & 1 ? 1 : -1) * step[k];
+    probe(w);
   }
+  // One component moved by its rounding and the direction kept unit, the others scaled to
+  // match: a BSDF that renormalises a vector made from wo (a half vector) rounds that vector's
+  // components again, which no move of the unnormalised wo reaches; near the normal this is
+  // cos θ quantised, the move that changes 1 − cos²θ.
+  for (int k = 0; k < 3; ++k)
+    for (double sign : {-1.0, 1.0}) {
+      const double moved = std::clamp(wo[k] + sign * step[k], -1.0, 1.0);
+      const double rest = 1 - wo[k] * wo[k];
+      if (step[k] == 0 || rest <= 0) continue;
+      Vector3d w = wo * std::sqrt(std::max(0.0, 1 - moved * moved) / rest);
+      w[k] = moved;
+      probe(w);
+    }
   return spread;
 }
 

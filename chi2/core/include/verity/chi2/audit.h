@@ -28,8 +28,9 @@ enum class Defect {
 
 // The default relative tolerances (BsdfCheckOptions sets others).
 inline constexpr double kWeightTolerance = 1e-4;
-// How far rounding may move each component of a unit direction: 4 units in the last place of
-// a float in [0.5, 1) (2⁻²⁴ each), what a few single-precision operations on it accumulate.
+// How far rounding may move a component of a unit direction in [0.5, 1): 4 units in the last
+// place of a float there (2⁻²⁴ each), what a few single-precision operations accumulate;
+// smaller components by as many units of their own.
 inline constexpr double kDirectionRounding = 4.0 / (1 << 24);
 // The failed comparisons of each kind an audit classifies beside every new worst.
 inline constexpr long long kClassifiedPerAudit = 16;

@@ -92,11 +92,10 @@ class BsdfModelSubject : public Subject {
   template <class Where>
   bool sized(const Eigen::ArrayXd& v, const char* what, Where where, Audit& audit) const;
   std::string format(const Eigen::ArrayXd& value) const;
-  // The largest |q(w')/q(wo) − 1| over the eight directions w' whose components are wo's moved
-  // by ±directionRounding: how far rounding the sampled direction alone moves the reference q
-  // of a failed comparison (Audit::record). Not renormalised: a direction rounded to float is
-  // unit only to its rounding, and renormalising would undo the move along wo, the one that
-  // changes cos θo near the normal.
+  // The largest |q(w')/q(wo) − 1| over directions w' near wo whose components are moved by
+  // their rounding (directionRounding scaled to each component's magnitude): all three at once,
+  // and one at a time with the direction kept unit. How far rounding the sampled direction
+  // alone moves the reference q of a failed comparison (Audit::record).
   template <class Q>
   double roundingSpread(const Vector3d& wo, Q&& q) const;
   // "component c " where the BSDF has several, for an example.
