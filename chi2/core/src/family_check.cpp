@@ -356,9 +356,14 @@ std::string FamilyResult::json() const {
     const FamilyConfiguration& c = configurations[i];
     nlohmann::json values;
     for (size_t k = 0; k < parameters.size(); ++k) values[parameters[k].name] = c.values[k];
-    nlohmann::json e{{"name", c.name},     {"values", values},
-                     {"corner", c.corner}, {"incidence_degrees", c.incidence},
-                     {"below", c.below},   {"verdict", verdictName(verdictOf(i))}};
+    nlohmann::json e{
+        {"name", c.name},
+        {"values", values},
+        {"corner", c.corner},
+        {"incidence_degrees", c.incidence},
+        {"below", c.below},
+        {"verdict", verdictName(verdictOf(i))},
+        {"failed_only_within_rounding", !stochastic() && chi2::failedOnlyByRounding(results[i])}};
     if (stochastic()) {
       const StochasticCheck& t = stochasticResults[i];
       nlohmann::json albedo = nlohmann::json::array();
