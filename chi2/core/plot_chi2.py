@@ -106,6 +106,17 @@ def draw_cells(ax, domain, values, **style):
     return mesh
 
 
+def draw_pair(fig, axes, domain, outside, cmap, norm, panels, label):
+    """Two panels of (values, title) on one logarithmic scale and one colour bar; a cell below
+    the scale is drawn in its lowest colour, one outside the support in grey."""
+    for ax, (values, name) in zip(axes, panels):
+        shown = np.where(outside, np.nan, np.maximum(values, norm.vmin / 2))
+        image = draw_cells(ax, domain, shown, cmap=cmap, norm=norm)
+        ax.set_title(name)
+        label_axes(ax, domain)
+    fig.colorbar(image, ax=axes, shrink=0.9, extend="min").set_label(label)
+
+
 def cell_areas(domain):
     """(ny, nx): strip i's cell j spans x_edges[i:i+2] by y_edges[i][j:j+2]; on the sphere
     (phi, cos theta) that product is the cell's solid angle."""
@@ -159,13 +170,10 @@ def main():
 
     wide = domain["kind"] == "sphere"
     fig, axes = plt.subplots(2, 3, figsize=(18, 10.4) if wide else (16, 11.6), layout="constrained")
-    for ax, values, name in ((axes[0, 0], observed, "observed"), (axes[0, 1], expected, "expected")):
-        shown = np.where(outside, np.nan, np.maximum(values, counts.vmin / 2))
-        image = draw_cells(ax, domain, shown, cmap=count_map, norm=counts)
-        ax.set_title(f"{name} counts ({values.sum():,.0f})")
-        label_axes(ax, domain)
-    bar = fig.colorbar(image, ax=axes[0, :2], shrink=0.9, extend="min")
-    bar.set_label("samples per cell (log scale)")
+    draw_pair(fig, axes[0, :2], domain, outside, count_map, counts,
+              [(observed, f"observed counts ({observed.sum():,.0f})"),
+               (expected, f"expected counts ({expected.sum():,.0f})")],
+              "samples per cell (log scale)")
 
     image = draw_cells(axes[0, 2], domain, z, cmap=diff_map, norm=diff_norm)
     axes[0, 2].set_title("(O − E)/√E: red where too many samples")
@@ -179,13 +187,10 @@ def main():
     bar.set_label(f"standard deviations (linear within ±{LINEAR_SIGMAS:g}, log beyond)")
 
     unit = "per steradian" if wide else "per unit area"
-    for ax, values, name in ((axes[1, 0], sampled, "sampled"), (axes[1, 1], claimed, "claimed")):
-        shown = np.where(outside, np.nan, np.maximum(values, densities.vmin / 2))
-        image = draw_cells(ax, domain, shown, cmap=count_map, norm=densities)
-        ax.set_title(f"{name} density (counts / (N · cell area))")
-        label_axes(ax, domain)
-    bar = fig.colorbar(image, ax=axes[1, :2], shrink=0.9, extend="min")
-    bar.set_label(f"density {unit} (log scale)")
+    draw_pair(fig, axes[1, :2], domain, outside, count_map, densities,
+              [(sampled, "sampled density (counts / (N · cell area))"),
+               (claimed, "claimed density (counts / (N · cell area))")],
+              f"density {unit} (log scale)")
 
     ratio_map = plt.get_cmap("RdBu_r").copy()
     ratio_map.set_bad("0.8")
