@@ -255,12 +255,11 @@ std::optional<Point2d> BsdfModelSubject::audited(const BsdfUniforms& u,
     const double tolerance = setup_.weightTolerance;
     if (!relativelyClose(s->pdf, p, tolerance)) {
       const double deviation = ratioDeviation(s->pdf, p);
-      audit.record(Defect::SamplePdf, deviation,
-                   audit.classifies(Defect::SamplePdf, deviation)
-                       ? roundingSpread(wo, [&](const Vector3d& w) { return model_.pdf(wi, w); })
-                       : NAN,
-                   fmt::format("sample pdf {} vs pdf() {} (ratio {:.6f}, tolerance {:g}) at {}",
-                               s->pdf, p, s->pdf / p, tolerance, at()));
+      audit.recordClassifying(
+          Defect::SamplePdf, deviation,
+          [&] { return roundingSpread(wo, [&](const Vector3d& w) { return model_.pdf(wi, w); }); },
+          fmt::format("sample pdf {} vs pdf() {} (ratio {:.6f}, tolerance {:g}) at {}", s->pdf, p,
+                      s->pdf / p, tolerance, at()));
     }
     const Eigen::ArrayXd expected =
         p > 0 ? Eigen::ArrayXd(f * std::fabs(wo.z()) / p) : Eigen::ArrayXd::Zero(f.size());
@@ -277,12 +276,12 @@ std::optional<Point2d> BsdfModelSubject::audited(const BsdfUniforms& u,
         const double pw = model_.pdf(wi, w);
         return pw > 0 ? model_.eval(wi, w)[worst] * std::fabs(w.z()) / pw : 0.0;
       };
-      audit.record(Defect::Weight, deviation,
-                   audit.classifies(Defect::Weight, deviation) ? roundingSpread(wo, weightAt) : NAN,
-                   fmt::format("weight {} vs eval*|cos|/pdf {} ({}ratio {:.6f}, "
-                               "tolerance {:g}) at {}",
-                               format(s->weight), format(expected), component(worst),
-                               s->weight[worst] / expected[worst], tolerance, at()));
+      audit.recordClassifying(
+          Defect::Weight, deviation, [&] { return roundingSpread(wo, weightAt); },
+          fmt::format("weight {} vs eval*|cos|/pdf {} ({}ratio {:.6f}, "
+                      "tolerance {:g}) at {}",
+                      format(s->weight), format(expected), component(worst),
+                      s->weight[worst] / expected[worst], tolerance, at()));
     }
   }
   if (setup_.checkReciprocity) checkReciprocity(wo, f, values.reversed(wo), audit);
@@ -324,18 +323,20 @@ void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd
     }
   }
   if (worst < 0) return;
-  if (!audit.classifies(Defect::Reciprocity, worst)) {
-    audit.record(Defect::Reciprocity, worst, NAN, example);
-    return;
-  }
   // Either side of the comparison may be the one that rounding moves.
   const int c = worstComponent;
-  const double forward = roundingSpread(wo, [&](const Vector3d& w) {
-    return adjoint && model_.evalAdjoint ? model_.evalAdjoint(wi, w)[c] : model_.eval(wi, w)[c];
-  });
-  const double backward =
-      roundingSpread(wo, [&](const Vector3d& w) { return model_.eval(w, wi)[c]; });
-  audit.record(Defect::Reciprocity, worst, std::max(forward, backward), example);
+  audit.recordClassifying(
+      Defect::Reciprocity, worst,
+      [&] {
+        const double forward = roundingSpread(wo, [&](const Vector3d& w) {
+          return adjoint && model_.evalAdjoint ? model_.evalAdjoint(wi, w)[c]
+                                               : model_.eval(wi, w)[c];
+        });
+        const double backward =
+            roundingSpread(wo, [&](const Vector3d& w) { return model_.eval(w, wi)[c]; });
+        return std::max(forward, backward);
+      },
+      example);
 }
 
 std::vector<double> BsdfModelSubject::jumpCones() const {

@@ -129,6 +129,14 @@ std::vector<size_t> reportOrder(const FamilyResult& r) {
   return order;
 }
 
+// What failed, or why the check could not run (`inconclusiveReason`); "" when it passed. A
+// CheckResult or a StochasticCheck.
+template <class Check>
+std::string whatFailed(const Check& c, const std::string& inconclusiveReason) {
+  if (c.verdict() == Verdict::Inconclusive) return inconclusiveReason;
+  return c.passed() ? "" : fmt::format("{}", fmt::join(c.failures(), ", "));
+}
+
 // One row's facts, shared by the text, Markdown and JSON forms.
 struct Row {
   std::string verdict, configuration, failed, statistic, defect, caught;
@@ -148,10 +156,7 @@ Row rowOf(const FamilyResult& r, size_t i) {
   row.configuration = r.configurations[i].name;
   if (r.stochastic()) {
     const StochasticCheck& c = r.stochasticResults[i];
-    if (c.verdict() == Verdict::Inconclusive)
-      row.failed = c.inconclusiveReason();
-    else if (!c.passed())
-      row.failed = fmt::format("{}", fmt::join(c.failures(), ", "));
+    row.failed = whatFailed(c, c.inconclusiveReason());
     if (c.verdict() != Verdict::Inconclusive) {  // else no test ran
       double totalP = 1;
       for (const WelchComparison& w : c.total) totalP = std::min(totalP, w.p);
@@ -166,10 +171,7 @@ Row rowOf(const FamilyResult& r, size_t i) {
   }
   const CheckResult& c = r.results[i];
   const TestResult& t = c.test;
-  if (c.verdict() == Verdict::Inconclusive)
-    row.failed = t.inconclusiveReason();
-  else if (!c.passed())
-    row.failed = fmt::format("{}", fmt::join(c.failures(), ", "));
+  row.failed = whatFailed(c, t.inconclusiveReason());
   if (t.chiSquareRan()) {
     row.statistic = fmt::format("chi-square {:.4g} on {} dof, p = {:.3g}", t.chiSquare.statistic,
                                 t.chiSquare.dof, t.chiSquare.pValue);

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <string>
 
 namespace verity::chi2 {
@@ -28,15 +29,15 @@ enum class Defect {
 
 // The default relative tolerances (BsdfCheckOptions sets others).
 inline constexpr double kWeightTolerance = 1e-4;
+inline constexpr double kReciprocityTolerance = 1e-3;
+// Values below this are compared absolutely (weights and densities are O(1) or larger).
+inline constexpr double kAbsoluteFloor = 1e-6;
 // How far rounding may move a component of a unit direction in [0.5, 1): 4 units in the last
 // place of a float there (2⁻²⁴ each), what a few single-precision operations accumulate;
 // smaller components by as many units of their own.
 inline constexpr double kDirectionRounding = 4.0 / (1 << 24);
 // The failed comparisons of each kind an audit classifies beside every new worst.
 inline constexpr long long kClassifiedPerAudit = 16;
-inline constexpr double kReciprocityTolerance = 1e-3;
-// Values below this are compared absolutely (weights and densities are O(1) or larger).
-inline constexpr double kAbsoluteFloor = 1e-6;
 
 // What each defect is called in reports ("weight != eval*cos/pdf", ...).
 const char* defectName(Defect d);
@@ -54,12 +55,15 @@ class Audit {
   // rounding alone moves the reference by up to `rounding` (|ratio − 1|), or NaN where it was
   // not classified.
   void record(Defect d, double deviation, double rounding, const std::string& example);
-  // Whether a failed comparison of this deviation is to be classified: one of the first
-  // kClassifiedPerAudit, or a new worst (so the worst is always classified).
-  bool classifies(Defect d, double deviation) const {
-    const int i = static_cast<int>(d);
-    return classified_[i] < kClassifiedPerAudit || deviation > worst_[i] ||
-           worstExamples_[i].empty();
+  // record(d, deviation, rounding(), example), calling rounding() (it costs evaluations) only
+  // where the comparison is to be classified: one of the first kClassifiedPerAudit, or a new
+  // worst (so the worst is always classified); else as not classified.
+  template <class Rounding>
+  void recordClassifying(Defect d, double deviation, Rounding&& rounding,
+                         const std::string& example) {
+    record(d, deviation,
+           classifies(d, deviation) ? rounding() : std::numeric_limits<double>::quiet_NaN(),
+           example);
   }
   void merge(const Audit& other);
   long long count(Defect d) const { return counts_[static_cast<int>(d)]; }
@@ -87,6 +91,12 @@ class Audit {
   double seconds() const { return seconds_; }
 
  private:
+  bool classifies(Defect d, double deviation) const {
+    const int i = static_cast<int>(d);
+    return classified_[i] < kClassifiedPerAudit || deviation > worst_[i] ||
+           worstExamples_[i].empty();
+  }
+
   static constexpr int kKinds = static_cast<int>(Defect::Count);
   std::array<long long, kKinds> counts_{};
   std::array<std::string, kKinds> examples_{};
