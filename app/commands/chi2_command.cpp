@@ -54,6 +54,7 @@ struct Chi2Args {
   std::optional<double> detect;
   double mass = chi2::kStatedMass;
   long long maxSamples = 100'000'000;
+  std::optional<long long> auditedSamples;
   uint64_t seed = 1;
   std::string output;
   bool seedTable = false;
@@ -96,6 +97,7 @@ chi2::TestOptions testOptions(const Chi2Args& a) {
         o.significance, a.power));
   if (a.detect) o.detect = chi2::DetectionTarget{*a.detect, a.mass, a.power};
   o.maxSamples = a.maxSamples;
+  o.auditedSamples = a.auditedSamples;
   o.cells = chi2::parseCellLayout(a.cells);
   return o;
 }
@@ -233,6 +235,7 @@ int runSweep(const Chi2Args& a, bool samplesGiven) {
   o.check.power = a.power;
   o.check.cells = chi2::parseCellLayout(a.cells);
   o.check.maxSamples = a.maxSamples;
+  o.check.auditedSamples = a.auditedSamples;
   if (a.detect) {
     o.check.detect = chi2::DetectionTarget{*a.detect, a.mass, a.power};
   } else if (samplesGiven) {
@@ -298,6 +301,12 @@ void addChi2Command(CLI::App& app, const ProcessGroup& group) {
       ->check(wholeNumber(1, LLONG_MAX))
       ->needs(detect)
       ->capture_default_str();
+  cmd->add_option("--audited-samples", args->auditedSamples,
+                  "compare each sample's weight, sample pdf and reciprocity on the first N "
+                  "samples only (whole blocks of 65536), the report stating what that subsample "
+                  "could have met; every sample when not given")
+      ->type_name("N")
+      ->check(wholeNumber(1, LLONG_MAX));
   addSeedOption(cmd, args->seed, "random seed, 0 to 2^64 - 1")->default_str("1");
   cmd->add_option("-o,--output", args->output,
                   "file name prefix: writes PREFIX.png, observed and expected counts and "

@@ -79,6 +79,8 @@ TEST_F(BadInput, EveryCommandExitsWithTwoAndNamesWhatItIsAbout) {
       {{"chi2", "--material", lambertian, "--mass", "0.1"}, "--mass requires --detect"},
       {{"chi2", "--material", lambertian, "--detect", "0.01", "--samples", "10"}, "--detect"},
       {{"chi2", "--material", lambertian, "--detect", "0"}, "--detect: "},
+      {{"chi2", "--material", lambertian, "--audited-samples", "0"},
+       "--audited-samples: must be a whole number of at least 1, not 0"},
       {{"chi2", "--material", lambertian, "--alpha", "1"}, "--alpha: "},
       {{"chi2", "--material", lambertian, "--power", "0.001"}, "--power: "},
   };

@@ -10,7 +10,8 @@
 namespace verity::python {
 
 const std::vector<std::string> kCheckKeywords = {
-    "name", "alpha", "samples", "seed", "resolution", "power", "detect", "max_samples", "cells"};
+    "name",   "alpha",       "samples",         "seed", "resolution", "power",
+    "detect", "max_samples", "audited_samples", "cells"};
 const std::vector<std::string> kBsdfKeywords = {"weight_tolerance",
                                                 "reciprocity_tolerance",
                                                 "direction_rounding",
@@ -71,6 +72,13 @@ void readCheckOptions(const py::kwargs& kw, const std::string& check, chi2::Chec
     o.detect = t;
   }
   read(kw, "max_samples", o.maxSamples);
+  long long audited = 0;
+  if (read(kw, "audited_samples", audited)) {
+    if (audited < 1)
+      throw py::value_error(
+          fmt::format("{}: audited_samples = {}: must be at least 1", check, audited));
+    o.auditedSamples = audited;
+  }
   std::string cells;
   if (read(kw, "cells", cells)) {
     try {

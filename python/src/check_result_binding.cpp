@@ -80,6 +80,18 @@ void bindCheckResult(py::module_& m) {
           "comparison (weight, sample pdf, reciprocity) adds 'classified', 'beyond_rounding' (how "
           "many of those classified rounding the sampled direction does not explain) and the "
           "worst of those")
+      .def_property_readonly(
+          "compared_samples",
+          [](const CheckResult& r) {
+            py::dict d;
+            d["samples"] = r.test.auditedSamples;
+            d["reach"] = r.test.auditReach;
+            d["power"] = r.test.auditPower;
+            return d;
+          },
+          "the samples whose weight, sample pdf and reciprocity were compared ('samples': all "
+          "unless audited_samples chose fewer), and 'reach', the least fraction of the samples a "
+          "defect must touch to be met among them with probability 'power'")
       .def_property_readonly("report", &CheckResult::report)
       .def("__str__", &CheckResult::report)
       .def("__repr__", [](const CheckResult& r) {

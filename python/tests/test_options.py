@@ -37,6 +37,17 @@ def test_a_budget_too_small_for_the_target_is_inconclusive():
     assert "more than the budget" in r.inconclusive_reason
 
 
+def test_a_subsample_of_the_comparisons_is_stated():
+    r = check(name="py audited", samples=200_000, audited_samples=1)
+    assert r.passed, str(r)
+    assert r.compared_samples["samples"] == 65_536  # one whole stream
+    assert r.compared_samples["reach"] == pytest.approx(1 - 0.1 ** (1 / 65_536), rel=1e-9)
+    assert "the first 65536 of the 200000 samples" in str(r)
+    assert check(name="py audited", samples=200_000).compared_samples["samples"] == 200_000
+    with pytest.raises(ValueError, match="audited_samples = 0"):
+        check(name="py audited", audited_samples=0)
+
+
 def test_equal_probability_cells_and_a_resolution():
     r = check(name="py equal", samples=100_000, cells="equal", resolution=8)
     assert r.passed, str(r)

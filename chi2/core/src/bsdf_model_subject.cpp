@@ -94,7 +94,7 @@ void BsdfModelSubject::sampleBatch(pcg32& rng, std::vector<std::optional<Point2d
   // The directions to evaluate, each evaluation in one batch.
   std::vector<size_t> index(out.size(), 0);
   std::vector<Vector3d> wos;
-  for (size_t k = 0; k < drawn.size(); ++k)
+  for (size_t k = 0; k < drawn.size() && audit.comparesSamples(); ++k)
     if (evaluable(drawn[k])) {
       index[k] = wos.size();
       wos.push_back(drawn[k]->wo);
@@ -235,9 +235,8 @@ std::optional<Point2d> BsdfModelSubject::audited(const BsdfUniforms& u,
     return std::nullopt;
   }
   const Vector3d& wo = s->wo;
-  const Eigen::ArrayXd f = values.eval(wo);
-  if (!sized(s->weight, "weight", at, audit) || !sized(f, "eval", at, audit))
-    return sphereCoords(setup_.frame.toWorld(wo));
+  const Point2d binned = sphereCoords(setup_.frame.toWorld(wo));
+  if (!sized(s->weight, "weight", at, audit)) return binned;
   if (!s->weight.allFinite() || !std::isfinite(s->pdf))
     audit.record(Defect::NonFinite,
                  fmt::format("weight {} pdf {} at {}", format(s->weight), s->pdf, at()));
@@ -245,6 +244,10 @@ std::optional<Point2d> BsdfModelSubject::audited(const BsdfUniforms& u,
     audit.record(Defect::Negative,
                  fmt::format("weight {} pdf {} (a returned sample needs pdf > 0) at {}",
                              format(s->weight), s->pdf, at()));
+  // The comparisons, which evaluate the model, on the samples audited.
+  if (!audit.comparesSamples()) return binned;
+  const Eigen::ArrayXd f = values.eval(wo);
+  if (!sized(f, "eval", at, audit)) return binned;
 
   const double p = values.pdf(wo);
   if (!f.allFinite() || !std::isfinite(p))

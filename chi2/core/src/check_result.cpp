@@ -16,6 +16,7 @@ CheckResult runCheck(const Subject& subject, const CheckOptions& options,
   o.power = options.power;
   o.detect = options.detect;
   o.maxSamples = options.maxSamples;
+  o.auditedSamples = options.auditedSamples;
   o.progress = options.progress;
   CheckResult r;
   r.test = runSamplingTest(subject, o);

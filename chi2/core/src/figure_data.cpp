@@ -59,6 +59,8 @@ std::string figureJson(const TestResult& r) {
   j["samples"] = r.samples;
   j["valid"] = r.valid;
   j["outside"] = r.outside;
+  j["audit"] = {
+      {"compared_samples", r.auditedSamples}, {"reach", r.auditReach}, {"power", r.auditPower}};
   j["significance"] = r.significance;
   j["domain"] = {{"kind", axes.kind},
                  {"name", d.name()},

@@ -58,6 +58,9 @@ void validate(const TestOptions& options) {
     throw std::invalid_argument(
         fmt::format("the number of samples must be at least 1, not {}", options.samples));
   }
+  if (options.auditedSamples && *options.auditedSamples < 1)
+    throw std::invalid_argument(
+        fmt::format("the samples to audit must be at least 1, not {}", *options.auditedSamples));
 }
 
 }  // namespace
@@ -149,6 +152,10 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
   const long long deltaBefore = subject.deltaSamples();
   constexpr long long kChunk = kSamplesPerStream;
   const long long chunks = (r.samples + kChunk - 1) / kChunk;
+  // Whole streams are audited, so that the audited samples do not depend on the threads.
+  const auto auditsChunk = [&](long long chunk) {
+    return !options.auditedSamples || chunk * kChunk < *options.auditedSamples;
+  };
   std::vector<std::vector<long long>> partial(chunks);
   std::vector<long long> validPerChunk(chunks, 0), outsidePerChunk(chunks, 0);
   std::vector<Audit> audits(chunks);
@@ -164,6 +171,7 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
     pcg32 rng(options.seed, static_cast<uint64_t>(c));
     std::vector<long long> hist(cells, 0);
     std::vector<std::optional<Point2d>> points(std::min(kChunk, r.samples - c * kChunk));
+    audits[c].setComparesSamples(auditsChunk(c));
     subject.sampleBatch(rng, points, audits[c]);
     drawSeconds[c] = drawClock.seconds();
     if (options.progress) options.progress->drawn += static_cast<long long>(points.size());
@@ -194,7 +202,11 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
     r.outside += outsidePerChunk[c];
     drawn += drawSeconds[c];
     binned += binSeconds[c];
+    if (auditsChunk(c)) r.auditedSamples += std::min(kChunk, r.samples - c * kChunk);
   }
+  r.auditPower = options.power;
+  r.auditReach =
+      r.auditedSamples > 0 ? -std::expm1(std::log1p(-options.power) / r.auditedSamples) : 1.0;
 
   r.deltaSamples = subject.deltaSamples() - deltaBefore;
   for (const Audit& a : audits) r.audit.merge(a);
@@ -312,6 +324,12 @@ std::string TestResult::report() const {
                      quadratureError);
   }
   s += fmt::format("  [{}] {}\n", audit.clean() ? "pass" : "FAIL", audit.describe());
+  if (!auditedAll())
+    s += indent + fmt::format(
+                      "compared per sample: the first {} of the {} samples, where a "
+                      "defect touching {:.2g} of the samples or more would have been "
+                      "met with {:.0f}% probability\n",
+                      auditedSamples, samples, auditReach, 100 * auditPower);
   const Verdict v = verdict();
   s += fmt::format("  {} in {:.2f} s", verdictName(v), seconds);
   if (v == Verdict::Inconclusive) s += ": " + inconclusiveReason();

@@ -85,6 +85,11 @@ class Audit {
   bool onlyRounding() const;
   bool clean() const;
   std::string describe() const;
+  // Whether the subject runs its per-sample comparisons (weight, sample pdf, reciprocity) on
+  // the samples this audit receives: a test that audits a subsample of its samples turns them
+  // off beyond it (TestOptions::auditedSamples). What is binned is checked finite either way.
+  bool comparesSamples() const { return comparesSamples_; }
+  void setComparesSamples(bool on) { comparesSamples_ = on; }
   // The seconds the checks took, which a Subject adds and merge() sums: a check's audit phase
   // (phase_times.h).
   void addSeconds(double seconds) { seconds_ += seconds; }
@@ -106,6 +111,7 @@ class Audit {
   std::array<double, kKinds> worstBeyond_{};
   std::array<std::string, kKinds> worstBeyondExamples_{};
   double seconds_ = 0;
+  bool comparesSamples_ = true;
 };
 
 }  // namespace verity::chi2

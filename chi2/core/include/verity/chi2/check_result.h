@@ -36,6 +36,10 @@ struct CheckOptions {
   // many as finding this target needs, at most maxSamples; beyond that it is INCONCLUSIVE.
   std::optional<DetectionTarget> detect;
   long long maxSamples = 100'000'000;
+  // The per-sample comparisons on the first this many samples only (whole streams), which
+  // the report states with what they could have met; on every sample when unset
+  // (TestOptions::auditedSamples).
+  std::optional<long long> auditedSamples;
   // Cells of equal probability under the claimed pdf (partition.h), so that a narrow lobe
   // keeps its degrees of freedom; or the uniform grid, cheaper to integrate (Verity's own
   // sweep uses it: TestOptions::cells).

@@ -38,6 +38,11 @@ struct TestOptions {
   // maxSamples; a target beyond that budget is never PASSED.
   std::optional<DetectionTarget> detect;
   long long maxSamples = 100'000'000;
+  // The per-sample comparisons (weight against eval·|cos|/pdf, sample pdf against pdf(),
+  // reciprocity: audit.h) on the first this many samples, rounded up to whole streams of
+  // kSamplesPerStream; on every sample when unset. The result states what the subsample
+  // could have met (TestResult::auditReach).
+  std::optional<long long> auditedSamples;
   // Where the test has got to, updated as it runs, for a display (phase_times.h); none if null.
   CheckProgress* progress = nullptr;
 };
@@ -81,6 +86,13 @@ struct TestResult {
   std::optional<DetectionTarget> target;
   long long neededSamples = 0, maxSamples = 0;
   bool targetReached() const { return !target || neededSamples <= maxSamples; }
+  // The samples whose per-sample comparisons ran (all of them unless
+  // TestOptions::auditedSamples chose fewer), and the least fraction of the samples a defect
+  // of theirs must touch to be met among them with probability auditPower (TestOptions::power):
+  // 1 − (1 − power)^(1/n).
+  long long auditedSamples = 0;
+  double auditReach = 0, auditPower = 0;
+  bool auditedAll() const { return auditedSamples >= samples; }
 
   // The chi-square test ran when there were valid samples, at least two cells after pooling
   // and trustworthy expected counts; otherwise no statistic of it is shown.
