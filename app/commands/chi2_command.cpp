@@ -141,8 +141,8 @@ int runOne(const Chi2Args& a) {
     const chi2::PhaseTimer timer(r.phases, chi2::Phase::DeltaLobes);
     chi2::DeltaCheckOptions d;
     d.eta = deltaRefractionIndex(subject.model().relativeIndex());
-    delta = chi2::checkDeltaLobes(subject.model(), subject.localWi(), d, r.samples, r.significance,
-                                  options.seed);
+    delta = chi2::checkDeltaLobes(subject.model(), subject.localWi(), d, chi2::deltaDraws(r),
+                                  r.significance, options.seed);
     r.deltaLobesChecked = true;
   }
   display.reset();
@@ -266,10 +266,11 @@ void addChi2Command(CLI::App& app, const ProcessGroup& group) {
   cmd->add_option("--normal", args->normal, "shading normal x,y,z (world space)");
   cmd->add_flag("--inside", args->inside, "incident direction from below the surface");
   CLI::Option* samples =
-      cmd->add_option("--samples", args->samples,
-                      fmt::format("number of samples (the suite's sweep draws {} for a warp, {} "
-                                  "for a BSDF)",
-                                  chi2::suite::kSamples, chi2::suite::kBsdfSamples))
+      cmd->add_option(
+             "--samples", args->samples,
+             fmt::format("number of samples (the suite's sweep draws {} for a warp, {} "
+                         "for a BSDF)",
+                         chi2::suite::kSamples, chi2::suite::kBsdfSamples))
           ->check(wholeNumber(1, LLONG_MAX));
   cmd->add_option("--alpha", args->alpha,
                   "the probability that a correct material fails this run (its two statistical "

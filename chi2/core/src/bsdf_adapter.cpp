@@ -50,8 +50,9 @@ CheckResult checkBsdf(const BsdfModel& model, const Eigen::Vector3d& wi,
   // The delta lobes, which the histogram leaves out, on a pass of their own.
   if (r.deltaSamples > 0 || options.delta.statisticalTests() > 0) {
     const PhaseTimer timer(r.test.phases, Phase::DeltaLobes);
-    r.delta = checkDeltaLobes(model, setup.wi, options.delta, options.samples, options.significance,
-                              options.seed ? *options.seed : seedFromName(setup.name));
+    r.delta =
+        checkDeltaLobes(model, setup.wi, options.delta, deltaDraws(r.test), options.significance,
+                        options.seed ? *options.seed : seedFromName(setup.name));
     r.test.deltaLobesChecked = r.delta.deltaSamples > 0;
   }
   return r;

@@ -2,9 +2,11 @@
 #include <fmt/ranges.h>
 #include <tbb/parallel_for.h>
 #include <verity/chi2/delta_check.h>
+#include <verity/chi2/power.h>
 #include <verity/chi2/significance.h>
 #include <verity/chi2/subject.h>
 
+#include <algorithm>
 #include <boost/math/distributions/binomial.hpp>
 #include <boost/math/distributions/students_t.hpp>
 #include <cmath>
@@ -298,6 +300,17 @@ std::string DeltaCheck::report() const {
                    wrongDirections == 0 ? "" : "; first: " + wrongDirectionExample);
   s += fmt::format("  [{}] delta {}", audit.clean() ? "pass" : "FAIL", audit.describe());
   return s;
+}
+
+long long deltaDraws(const TestResult& test) {
+  const bool nothingClaimed = std::all_of(test.probability.begin(), test.probability.end(),
+                                          [](double p) { return p == 0; });
+  if (!test.target || !nothingClaimed) return test.samples;
+  const DetectionTarget& t = *test.target;
+  const int dof = std::max(1, test.domain.cells() - 1);
+  const double needed = std::ceil(chiSquareNoncentrality(dof, test.significance, t.power) /
+                                  std::pow(effectForDensityError(t.densityError, t.mass), 2));
+  return static_cast<long long>(std::min(needed, static_cast<double>(test.maxSamples)));
 }
 
 }  // namespace verity::chi2

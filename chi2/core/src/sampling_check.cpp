@@ -3,6 +3,7 @@
 #include <verity/chi2/partition.h>
 #include <verity/chi2/sampling_check.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -143,8 +144,16 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
     r.neededSamples = samplesForTarget(*options.detect, r.probability, total, r.significance);
     r.samples = std::min(r.neededSamples, options.maxSamples);
   } else if (options.detect) {
-    // Nothing is claimed, so no sample may be drawn: the budget tests that at its most.
-    r.samples = options.maxSamples;
+    // Nothing is claimed, so a single valid sample fails the test outright: draw enough to
+    // meet, with the target's power, a sampler that returns one with the probability the
+    // target's error moves, εm: (1 − εm)^N ≤ 1 − power. (Drawing the whole budget cost a
+    // smooth glass 10⁸ draws to say no more.)
+    r.target = options.detect;
+    r.maxSamples = options.maxSamples;
+    r.neededSamples = static_cast<long long>(
+        std::ceil(std::log1p(-options.detect->power) /
+                  std::log1p(-options.detect->densityError * options.detect->mass)));
+    r.samples = std::min(r.neededSamples, options.maxSamples);
   }
 
   // Sampling, in fixed chunks with one PCG32 stream each: the result does not depend on
@@ -295,7 +304,16 @@ Verdict TestResult::verdict() const {
 
 std::string TestResult::report() const {
   std::string s = fmt::format("{}\n  domain {}, {} samples", subject, domain.name(), samples);
-  if (target)
+  const bool nothingClaimed =
+      std::all_of(probability.begin(), probability.end(), [](double p) { return p == 0; });
+  if (target && nothingClaimed)
+    s += fmt::format(
+        " ({} to meet with {:.0f}% probability a sampler that returns a sample "
+        "with probability {:.2g} where pdf() claims none{})",
+        targetReached() ? "chosen" : "the budget", 100 * target->power,
+        target->densityError * target->mass,
+        targetReached() ? "" : fmt::format(", which needs {}", neededSamples));
+  else if (target)
     s += fmt::format(" ({} to find {}{})", targetReached() ? "chosen" : "the budget",
                      target->describe(),
                      targetReached() ? "" : fmt::format(", which needs {}", neededSamples));

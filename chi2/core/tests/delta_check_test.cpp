@@ -146,8 +146,9 @@ Vec3 incidence(double degrees) {
 }
 
 // Correct checks: mirror, spectral mirror, glass from outside and inside, thin glass, coated
-// diffuse; their tests: 2 each, and 1 + 4 + 4 + 4 + 2 stated shares and albedos.
-constexpr int kCorrectChecks = 6;
+// diffuse, mirror and uniform sphere under a target; their tests: 2 each, and 1 + 4 + 4 + 4 + 2
+// stated shares and albedos.
+constexpr int kCorrectChecks = 8;
 constexpr int kCorrectTests = kStatisticalTestsPerCheck * kCorrectChecks + 15;
 const double kLevel = sidakLevel(0.01, kCorrectTests);
 constexpr long long kSamples = 100'000;
@@ -198,6 +199,32 @@ TEST(DeltaLobes, AllDeltaSamplesStateNoChiSquarePower) {
   EXPECT_EQ(power.find('%'), std::string::npos) << power;
   EXPECT_EQ(r.report().find("0% density error"), std::string::npos) << r.report();
   EXPECT_TRUE(std::isinf(r.test.chiSquarePower.densityError(kStatedMass))) << power;
+}
+
+// Under a target, a mirror's histogram claims nothing and draws only what meets a stray sample
+// (460 for 2% over 1/4 of the mass); its delta lobes get what the target needs of a histogram
+// of the same cells holding the whole mass: the samples the same check draws for a density
+// spread over the whole sphere (every cell holds mass: 2,047 dof). They once got the 460.
+TEST(DeltaLobes, UnderATargetTheDeltaLobesGetWhatAFullHistogramWouldDraw) {
+  BsdfCheckOptions o = options("mirror target");
+  o.detect = DetectionTarget{0.02, 0.25, 0.9};
+  const CheckResult mirror = checkBsdf(Mirror{}.model(), incidence(30), o);
+  EXPECT_EQ(mirror.verdict(), Verdict::Passed) << failed(mirror);
+  EXPECT_EQ(mirror.test.samples, 460);
+  const double albedo = 0.5;
+  const BsdfModel sphere = bsdfModel<Vec3>(
+      [&](const Vec3&, const BsdfUniforms& u) -> std::optional<SampledDirection<Vec3, double>> {
+        const double z = 1 - 2 * u.xy.x, r = std::sqrt(std::max(0.0, 1 - z * z));
+        const double phi = 2 * std::numbers::pi * u.xy.y;
+        return SampledDirection<Vec3, double>{Vec3{r * std::cos(phi), r * std::sin(phi), z},
+                                              albedo * std::fabs(z), 1 / (4 * std::numbers::pi)};
+      },
+      [&](const Vec3&, const Vec3&) { return albedo / (4 * std::numbers::pi); },
+      [](const Vec3&, const Vec3&) { return 1 / (4 * std::numbers::pi); });
+  o.name = "uniform sphere target";
+  const CheckResult full = checkBsdf(sphere, incidence(30), o);
+  ASSERT_EQ(full.test.chiSquare.dof, full.test.domain.cells() - 1) << full.report();
+  EXPECT_EQ(mirror.delta.samples, full.test.samples);
 }
 
 // A spectral mirror: four wavelengths, each with its own reflectance, held to a stated albedo

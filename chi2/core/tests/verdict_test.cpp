@@ -12,11 +12,12 @@ namespace verity::chi2::verdict_test {
 namespace {
 
 // Uniform samples on the unit square with a claimed density `scale` (1 is right), or no
-// sample at all (with a zero density, or the uniform one), or a density with a narrow spike the
-// quadrature is not told about (so its error estimate stays far above the tolerance).
+// sample at all (with a zero density, or the uniform one), or a uniform sample with probability
+// 0.01 and none otherwise while the density is zero (Strays), or a density with a narrow spike
+// the quadrature is not told about (so its error estimate stays far above the tolerance).
 class SquareSubject : public Subject {
  public:
-  enum class Kind { Uniform, Declines, DeclinesButClaims, HiddenSpike, NanSample };
+  enum class Kind { Uniform, Declines, DeclinesButClaims, Strays, HiddenSpike, NanSample };
   SquareSubject(Kind kind, double scale = 1) : kind_(kind), scale_(scale) {}
   const Domain& domain() const override { return domain_; }
   double pdf(double x, double y) const override {
@@ -25,10 +26,11 @@ class SquareSubject : public Subject {
       const double r = std::hypot(x - 0.3, y - 0.3);
       return scale_ * 0.1 / std::max(r, 1e-300);
     }
-    return kind_ == Kind::Declines ? 0.0 : scale_;
+    return kind_ == Kind::Declines || kind_ == Kind::Strays ? 0.0 : scale_;
   }
   std::optional<Point2d> sample(pcg32& rng, Audit& audit) const override {
     if (kind_ == Kind::Declines || kind_ == Kind::DeclinesButClaims) return std::nullopt;
+    if (kind_ == Kind::Strays && uniform01(rng) >= 0.01f) return std::nullopt;
     const Point2d p(uniform01(rng), uniform01(rng));
     if (kind_ == Kind::NanSample && p.x() < 1e-3) {
       audit.record(Defect::NonFinite, "a made-up NaN");
@@ -76,6 +78,29 @@ TEST(FrameworkVerdict, NothingSampledAndNothingClaimedPassesOnTheIntegralAlone) 
       << r.report();
   EXPECT_EQ(r.report().find("p-value"), std::string::npos) << r.report();
   ASSERT_TRUE(r.integralPower.detectable());
+}
+
+// Under a target, a subject that claims nothing draws what meets, with the target's power, a
+// sampler that strays with the probability εm the target's error moves: (1 − 0.005)^N ≤ 0.1,
+// N = 460 for 2% over 1/4 of the mass (it drew the whole budget of 10⁸ before). One that strays
+// with probability 0.01 is met (missed with probability 0.99^460 = 0.01).
+TEST(FrameworkVerdict, NothingClaimedUnderATargetDrawsWhatMeetsAStraySample) {
+  TestOptions o;
+  o.seed = seedFromName("verdict nothing claimed");
+  o.significance = sidakLevel(0.01, 1);
+  o.detect = DetectionTarget{0.02, 0.25, 0.9};
+  const TestResult none = runSamplingTest(SquareSubject(SquareSubject::Kind::Declines), o);
+  EXPECT_EQ(none.samples, 460);
+  EXPECT_EQ(none.verdict(), Verdict::Passed) << none.report();
+  EXPECT_NE(none.report().find("460 samples (chosen to meet with 90% probability a sampler "
+                               "that returns a sample with probability 0.005 where pdf() "
+                               "claims none)"),
+            std::string::npos)
+      << none.report();
+  const TestResult strays = runSamplingTest(SquareSubject(SquareSubject::Kind::Strays), o);
+  EXPECT_EQ(strays.samples, 460);
+  EXPECT_GT(strays.valid, 0);
+  EXPECT_EQ(strays.verdict(), Verdict::Failed) << strays.report();
 }
 
 TEST(FrameworkVerdict, NothingSampledWhileMassIsClaimedFails) {

@@ -19,6 +19,7 @@
 
 #include <verity/chi2/audit.h>
 #include <verity/chi2/bsdf_model.h>
+#include <verity/chi2/sampling_check.h>
 
 #include <array>
 #include <cstdint>
@@ -87,5 +88,11 @@ struct DeltaCheck {
 DeltaCheck checkDeltaLobes(const BsdfModel& model, const Eigen::Vector3d& wi,
                            const DeltaCheckOptions& options, long long samples, double significance,
                            uint64_t seed);
+
+// The draws the delta lobes get beside the sampling test `test`: as many as it drew; but where
+// a target sized it and its pdf claims nothing (a smooth glass: every sample a delta lobe, and
+// the test draws only what meets a stray one), what the target needs of a histogram of the
+// test's cells holding the whole mass, at most its budget.
+long long deltaDraws(const TestResult& test);
 
 }  // namespace verity::chi2
