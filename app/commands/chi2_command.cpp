@@ -268,9 +268,9 @@ void addChi2Command(CLI::App& app, const ProcessGroup& group) {
   CLI::Option* samples =
       cmd->add_option(
              "--samples", args->samples,
-             fmt::format("number of samples (the suite's sweep draws {} for a warp, {} "
-                         "for a BSDF)",
-                         chi2::suite::kSamples, chi2::suite::kBsdfSamples))
+             fmt::format("number of samples (the suite's sweep draws what a {:g}% "
+                         "density error over 1/4 of the mass needs, --detect {:g})",
+                         100 * chi2::suite::kSweepDensityError, chi2::suite::kSweepDensityError))
           ->check(wholeNumber(1, LLONG_MAX));
   cmd->add_option("--alpha", args->alpha,
                   "the probability that a correct material fails this run (its two statistical "

@@ -251,22 +251,40 @@ std::vector<BsdfCase> bsdfCases() {
                        R"("b":{{"type":"phong","exponent":1e6}},"amount":{}}})",
                        amount),
            false);
-  // Phong's exponent 0 at 89.9°: its lobe, the hemisphere about the mirror direction, ends
-  // in a step that runs 0.1° inside the grid's cell edges at φ = 90° and 270°, and the
-  // quadrature misses the slivers it leaves in the six cells nearest the horizon (1e-5 of the
-  // probability: expected 0 where 2.4 samples are due, and land). Equal-probability cells
-  // are cut along the lobe's own edge. The narrowest lobes are also tested on equal cells,
-  // where they keep the degrees of freedom that the grid's few cells take from them.
-  for (BsdfCase& c : v)
-    if (c.name == "corner_phong_exp0_out_t89p9") c.cells = CellLayout::EqualProbability;
+  // The narrowest lobes on the 64 × 32 cells of `verity chi2`, where they keep the degrees
+  // of freedom that a grid's few cells take from them (NarrowLobeCells).
   for (const auto& [name, json] :
        {std::pair{"phong_exp1e6", R"({"type":"phong","exponent":1e6})"},
         std::pair{"ggx_visible_a0p0001", R"({"type":"ggx","alpha":1e-4,"sampling":"visible"})"}}) {
     add(std::string("equalcells_") + name, json, 45, false, false);
-    v.back().cells = CellLayout::EqualProbability;
+    v.back().resolution = kSphereResolution;
     v.back().minDof = 1001;  // over a thousand of the 64 × 32 cells' 2,047
   }
   for (size_t i = extremes; i < v.size(); ++i) v[i].quick = false;
+  // The corners whose valid draws are too rare for the sweep's target within its budget
+  // (measured: the draws the target needs, from a run with the budget raised).
+  const std::string rare =
+      "of the draws are valid (the rest leave below the horizon or are "
+      "declined), so a 2% error needs ";
+  for (BsdfCase& c : v) {
+    const auto is = [&](const std::string& prefix) { return c.name.rfind(prefix, 0) == 0; };
+    const bool oblique = c.incidence == 0 || c.incidence == 45;
+    if (oblique && !c.inside &&
+        (is("corner_beckmann_") || is("corner_ggx_") || is("corner_metal_r2")) &&
+        (c.name.find("_a4_") != std::string::npos || is("corner_metal_r2")))
+      c.weaker = "alpha 4 (metal: roughness 2): about 6% " + rare + "1.7e7 draws";
+    if (is("corner_roughdielectric_") && c.name.find("_a4_in_t0") != std::string::npos)
+      c.weaker = "alpha 4 from inside at 0 deg: about 7% " + rare + "1.4e7 draws";
+    if (c.name == "corner_roughdielectric_ggx_a0p1_ior0p998_out_t90")
+      c.weaker = "index 1/1.002 at 90 deg: about 17% " + rare + "6.0e6 draws";
+    if (c.name == "corner_roughdielectric_ggx_a0p1_ior1p001_in_t90")
+      c.weaker = "index 1.001 from inside at 90 deg: about 10% " + rare + "1.0e7 draws";
+    // On 32 x 16 equal cells the partition misses the refraction lobe of alpha 1e-4 at 45 deg
+    // (it finds the reflection's 5% of the mass, and the samples in the refraction fail
+    // outright): a defect of the partition, not the material, which 64 x 32 cells avoid.
+    if (is("corner_roughdielectric_") && c.name.find("_a0p0001_out_t45") != std::string::npos)
+      c.resolution = kSphereResolution;
+  }
   return v;
 }
 
@@ -278,7 +296,8 @@ std::vector<LightCase> lightCases() {
     const std::string surfaces =
         "[{" + shape + R"(, "material": {"type": "diffuse_light", "emit": 1}}])";
     v.push_back(
-        {name, {name, surfaces, std::move(obj), Point3f::Zero(), sampling, kSphereResolution}});
+        {name,
+         {name, surfaces, std::move(obj), Point3f::Zero(), sampling, kSweepSphereResolution}});
   };
   auto sphere = [](double radius, const std::string& centre) {
     return fmt::format(R"("type": "sphere", "radius": {}, "transform": {{"translate": {}}})",
@@ -337,36 +356,42 @@ BsdfSetup setupFor(const BsdfCase& c) {
   s.material = makeMaterial(c.json);
   s.normal = c.rotated ? rotatedNormal() : Vector3f::UnitZ();
   s.wi = incidentDirection(c.incidence, c.inside);
-  s.resolution = kSphereResolution;
+  s.resolution = c.resolution;
   return s;
 }
 
 TestOptions optionsFor(const std::string& name) {
   TestOptions o;
-  o.samples = kSamples;
   o.seed = seedFromName(name);
   o.significance = perTestSignificance();
+  o.cells = CellLayout::EqualProbability;
+  o.detect = DetectionTarget{kSweepDensityError, kStatedMass, kDefaultPower};
+  o.maxSamples = kSweepBudget;
   return o;
 }
 
 TestResult runWarp(const WarpCase& c) {
   const bool planar = c.kind == WarpKind::DiskPolar || c.kind == WarpKind::DiskConcentric ||
                       c.kind == WarpKind::Triangle || c.kind == WarpKind::SquareIdentity;
-  auto subject =
-      makeWarpSubject(c.kind, c.parameter, planar ? kPlanarResolution : kSphereResolution);
+  auto subject = makeWarpSubject(c.kind, c.parameter,
+                                 planar ? kSweepPlanarResolution : kSweepSphereResolution);
   return runSamplingTest(*subject, optionsFor("warp_" + c.name));
 }
 
 TestResult runMicrofacet(const MicrofacetCase& c) {
-  auto subject = makeMicrofacetNormalSubject(c.distribution(), c.wi(), kSphereResolution);
+  auto subject = makeMicrofacetNormalSubject(c.distribution(), c.wi(), kSweepSphereResolution);
   return runSamplingTest(*subject, optionsFor("microfacet_" + c.name));
 }
 
 TestResult runBsdf(const BsdfCase& c) {
   BsdfSubject subject(setupFor(c));
   TestOptions o = optionsFor("bsdf_" + c.name);
-  o.samples = kBsdfSamples;
   o.cells = c.cells;
+  o.auditedSamples = kComparedSamples;
+  if (!c.weaker.empty()) {
+    o.detect.reset();
+    o.samples = kSweepBudget;
+  }
   return runSamplingTest(subject, o);
 }
 

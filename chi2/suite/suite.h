@@ -18,14 +18,26 @@
 
 namespace verity::chi2::suite {
 
-// Histogram resolution and sample count: 64 × 32 cells in (φ, cos θ) and 10⁶ samples for
-// directions (about 500 samples per cell where the density is uniform).
+// `verity chi2`'s check of one material: 64 × 32 cells in (φ, cos θ) and 10⁶ samples (about
+// 500 samples per cell where the density is uniform).
 inline constexpr int kSphereResolution = 32;
-inline constexpr int kPlanarResolution = 40;
 inline constexpr long long kSamples = 1'000'000;
-// BSDFs: 5·10⁵ samples (each also costs four eval() and one pdf() call for the per-sample
-// checks), which keeps the full sweep within its time budget on two cores.
-inline constexpr long long kBsdfSamples = 500'000;
+
+// The sweep's question, asked of every configuration: a 2% density error over cells holding a
+// quarter of the mass, found with 90% probability at the suite's level (power.h). The cells
+// are of equal probability under the claimed pdf, 32 × 16 on the sphere and 16 × 16 on a
+// plane (511 and 255 dof: about 1.06·10⁶ and 0.8·10⁶ valid samples; 64 × 32 would need
+// 2.0·10⁶), and the check draws what the target needs, at most kSweepBudget; a configuration
+// whose valid samples are too rare for that budget states its weaker power by name
+// (BsdfCase::weaker).
+inline constexpr double kSweepDensityError = 0.02;
+inline constexpr int kSweepSphereResolution = 16;
+inline constexpr int kSweepPlanarResolution = 16;
+inline constexpr long long kSweepBudget = 4'000'000;
+// A BSDF's comparisons (four eval() and one pdf() call per sample, more than drawing it) on
+// the first 5·10⁵ samples: a defect touching 4.6·10⁻⁶ of the samples is met with 90%
+// probability (TestOptions::auditedSamples).
+inline constexpr long long kComparedSamples = 500'000;
 
 struct WarpCase {
   std::string name;
@@ -52,12 +64,14 @@ struct BsdfCase {
   bool inside = false;   // wi below the surface (rough dielectric)
   bool rotated = false;  // shading normal normalize(0.25, 0.5, 1)
   bool quick = false;
-  // The sweep's grid, or cells of equal probability where a lobe is narrower than a grid
-  // cell or ends on a grid edge (TestOptions::cells).
-  CellLayout cells = CellLayout::Grid;
+  CellLayout cells = CellLayout::EqualProbability;
+  int resolution = kSweepSphereResolution;  // cells in cos θ, twice as many in φ
   // The degrees of freedom the cells must keep (0: no such claim). A narrow lobe's equal
-  // cells are there to keep them, which the grid's few cells take away (docs/checks.md).
+  // cells are there to keep them, which a grid's few cells take away (docs/checks.md).
   int minDof = 0;
+  // Why the configuration cannot find the sweep's target within kSweepBudget, where it
+  // cannot: it then draws the budget and states the error it could find (reports/chi2-power.md).
+  std::string weaker;
 };
 
 // An area light sampled from a reference point (see light_subjects.h).

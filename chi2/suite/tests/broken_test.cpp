@@ -1,5 +1,6 @@
 // Proof that the suite can fail: deliberately broken samplers must each be rejected, by
-// the check that should catch them, at the suite's own (Šidák-corrected) level; the same
+// the check that should catch them, as the sweep checks a BSDF (its cells, its target and
+// its compared samples) at the suite's own (Šidák-corrected) level; the same
 // reference implementation without a flaw must pass (these controls are counted in the
 // suite's declared number of tests).
 #include <gtest/gtest.h>
@@ -30,12 +31,11 @@ TestResult run(Flaw flaw, float ior, double incidence, bool inside, const std::s
   s.name = "reference ggx " + name;
   s.material = std::make_shared<ReferenceGgx>(0.3f, ior, flaw);
   s.wi = incidentDirection(incidence, inside);
-  s.resolution = suite::kSphereResolution;
+  s.resolution = suite::kSweepSphereResolution;
   BsdfSubject subject(s);
-  TestOptions o;
-  o.samples = suite::kSamples;
-  o.seed = seedFromName("broken_" + name);
-  o.significance = perTestSignificance();
+  // The sweep's own question of a BSDF (suite.cpp's runBsdf).
+  TestOptions o = suite::optionsFor("broken_" + name);
+  o.auditedSamples = suite::kComparedSamples;
   return runSamplingTest(subject, o);
 }
 

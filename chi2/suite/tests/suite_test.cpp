@@ -34,7 +34,9 @@ void expectPassed(const TestResult& r) {
   const auto record = [](const char* key, double value) {
     ::testing::Test::RecordProperty(key, fmt::format("{:.6g}", value));
   };
+  record("samples", static_cast<double>(r.samples));
   record("valid_samples", static_cast<double>(r.valid));
+  record("compared_samples", static_cast<double>(r.auditedSamples));
   if (r.chiSquareRan()) {
     record("dof", r.chiSquare.dof);
     record("density_error_quarter", r.chiSquarePower.densityError(kStatedMass));
@@ -107,6 +109,7 @@ INSTANTIATE_TEST_SUITE_P(Quick, LightTest, ::testing::ValuesIn(select(lightCases
 class BsdfTest : public ::testing::TestWithParam<BsdfCase> {};
 TEST_P(BsdfTest, SamplesMatchPdf) {
   const TestResult r = runBsdf(GetParam());
+  if (!GetParam().weaker.empty()) ::testing::Test::RecordProperty("weaker", GetParam().weaker);
   expectPassed(r);
   EXPECT_GE(r.chiSquare.dof, GetParam().minDof) << r.report();
 }
