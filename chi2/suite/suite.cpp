@@ -279,11 +279,6 @@ std::vector<BsdfCase> bsdfCases() {
       c.weaker = "index 1/1.002 at 90 deg: about 17% " + rare + "6.0e6 draws";
     if (c.name == "corner_roughdielectric_ggx_a0p1_ior1p001_in_t90")
       c.weaker = "index 1.001 from inside at 90 deg: about 10% " + rare + "1.0e7 draws";
-    // On 32 x 16 equal cells the partition misses the refraction lobe of alpha 1e-4 at 45 deg
-    // (it finds the reflection's 5% of the mass, and the samples in the refraction fail
-    // outright): a defect of the partition, not the material, which 64 x 32 cells avoid.
-    if (is("corner_roughdielectric_") && c.name.find("_a0p0001_out_t45") != std::string::npos)
-      c.resolution = kSphereResolution;
   }
   return v;
 }

@@ -209,4 +209,28 @@ TEST(FrameworkPartition, LayoutIsParsedByName) {
 }
 
 }  // namespace
+
+// A narrow lobe 20° from the pole of the sphere (σ = 10⁻⁴ rad, unit mass: a rough dielectric's
+// refraction at α 10⁻⁴ seen from 30°), declared as a peak, in the top row of the grid's
+// 32 rows in cos θ (0.9375 to 1). Such a peak was once left to the pole's grading along cos θ,
+// which never reached it: the partition's marginal found no mass there, its cells integrated
+// to 0, and a rough dielectric's check FAILED outright, its samples where nothing was claimed.
+TEST(FrameworkPartition, ANarrowLobeNearThePoleIsFoundAndCut) {
+  const double s = 1e-4, theta = 20 * std::numbers::pi / 180, phi = 2.0;
+  const Vector3d c = sphereDirection(phi, std::cos(theta));
+  const DensityFn lobe = [=](double x, double z) {
+    const double d2 = (sphereDirection(x, z) - c).squaredNorm();
+    return std::exp(-d2 / (2 * s * s)) / (2 * std::numbers::pi * s * s);
+  };
+  DensityFeatures features;
+  features.peaks = {Point2d(phi, std::cos(theta))};
+  const Domain cells = equalProbabilityCells(sphereDomain(32), lobe, features, {});
+  double total = 0;
+  for (const CellIntegral& cell : integrateGrid(lobe, cells, QuadratureOptions{}, features))
+    total += cell.value;
+  EXPECT_NEAR(total, 1, 1e-4);
+  // As for the lobe on the square: a strip on either side, and a cell below and above the lobe
+  // in each of the 62 others, expect nothing.
+  expectNearlyEqual(probabilities(cells, lobe, features), 2 * 32 + 2 * 62);
+}
 }  // namespace verity::chi2
