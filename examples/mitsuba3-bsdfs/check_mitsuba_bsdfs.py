@@ -30,7 +30,12 @@ import sys
 import threading
 import time
 
-import numpy as np
+try:
+    import numpy as np
+except ImportError:
+    print("check_mitsuba_bsdfs: error: NumPy is missing: run it with a Python that has it "
+          "(Debian's /usr/bin/python3 with python3-numpy)", file=sys.stderr)
+    sys.exit(2)
 
 # ----------------------------------------------------------------------------------------------
 # Mitsuba through a batched adapter
