@@ -250,7 +250,7 @@ TEST_F(CommandLine, HelpShowsDefaults) {
   const auto [chi2, chi2Status] = stdoutOf("chi2 --help");
   EXPECT_EQ(chi2Status, 0);
   for (const char* text :
-       {"--samples INT=1000000", "500000", "PREFIX", "--threads", "0: all cores"})
+       {"--samples INT=1000000", "--detect 0.02", "PREFIX", "--threads", "0: all cores"})
     EXPECT_NE(chi2.find(text), std::string::npos) << text << "\n" << chi2;
   const auto [study, studyStatus] = stdoutOf("study speedup --help");
   EXPECT_EQ(studyStatus, 0);
