@@ -349,14 +349,19 @@ std::string TestResult::report() const {
                       "met with {:.0f}% probability\n",
                       auditedSamples, samples, auditReach, 100 * auditPower);
   const Verdict v = verdict();
+  // Every sample a delta lobe: the verdict is the delta lobes' (below), not this part's.
+  if (v == Verdict::Passed && !chiSquareRan() && deltaLobesChecked)
+    return s + fmt::format(
+                   "  histogram: nothing to test in {:.2f} s, every sample was a delta "
+                   "lobe (checked below)",
+                   seconds);
   s += fmt::format("  {} in {:.2f} s", verdictName(v), seconds);
   if (v == Verdict::Inconclusive) s += ": " + inconclusiveReason();
   if (v == Verdict::Passed)
-    s += ": " + (chiSquareRan()      ? chiSquarePower.describe()
-                 : deltaLobesChecked ? "every sample was a delta lobe, checked below"
-                                     : "the sampler declined every sample and pdf() claims no "
-                                       "mass; " +
-                                           integralPower.describe());
+    s += ": " + (chiSquareRan() ? chiSquarePower.describe()
+                                : "the sampler declined every sample and pdf() claims no "
+                                  "mass; " +
+                                      integralPower.describe());
   return s;
 }
 
