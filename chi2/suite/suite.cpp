@@ -268,12 +268,14 @@ std::vector<BsdfCase> bsdfCases() {
       "declined), so a 2% error needs ";
   for (BsdfCase& c : v) {
     const auto is = [&](const std::string& prefix) { return c.name.rfind(prefix, 0) == 0; };
-    const bool oblique = c.incidence == 0 || c.incidence == 45;
-    if (oblique && !c.inside &&
-        (is("corner_beckmann_") || is("corner_ggx_") || is("corner_metal_r2")) &&
-        (c.name.find("_a4_") != std::string::npos || is("corner_metal_r2")))
+    const auto has = [&](const std::string& part) {
+      return c.name.find(part) != std::string::npos;
+    };
+    const bool conductorA4 =
+        ((is("corner_beckmann_") || is("corner_ggx_")) && has("_a4_")) || is("corner_metal_r2");
+    if (conductorA4 && !c.inside && (c.incidence == 0 || c.incidence == 45))
       c.weaker = "alpha 4 (metal: roughness 2): about 6% " + rare + "1.7e7 draws";
-    if (is("corner_roughdielectric_") && c.name.find("_a4_in_t0") != std::string::npos)
+    if (is("corner_roughdielectric_") && has("_a4_in_t0"))
       c.weaker = "alpha 4 from inside at 0 deg: about 7% " + rare + "1.4e7 draws";
     if (c.name == "corner_roughdielectric_ggx_a0p1_ior0p998_out_t90")
       c.weaker = "index 1/1.002 at 90 deg: about 17% " + rare + "6.0e6 draws";

@@ -2,7 +2,6 @@
 #include <fmt/ranges.h>
 #include <tbb/parallel_for.h>
 #include <verity/chi2/delta_check.h>
-#include <verity/chi2/power.h>
 #include <verity/chi2/significance.h>
 #include <verity/chi2/subject.h>
 
@@ -303,14 +302,9 @@ std::string DeltaCheck::report() const {
 }
 
 long long deltaDraws(const TestResult& test) {
-  const bool nothingClaimed = std::all_of(test.probability.begin(), test.probability.end(),
-                                          [](double p) { return p == 0; });
-  if (!test.target || !nothingClaimed) return test.samples;
-  const DetectionTarget& t = *test.target;
-  const int dof = std::max(1, test.domain.cells() - 1);
-  const double needed = std::ceil(chiSquareNoncentrality(dof, test.significance, t.power) /
-                                  std::pow(effectForDensityError(t.densityError, t.mass), 2));
-  return static_cast<long long>(std::min(needed, static_cast<double>(test.maxSamples)));
+  if (!test.target || !test.nothingClaimed()) return test.samples;
+  const std::vector<double> whole(test.domain.cells(), 1.0 / test.domain.cells());
+  return std::min(samplesForTarget(*test.target, whole, 1.0, test.significance), test.maxSamples);
 }
 
 }  // namespace verity::chi2

@@ -20,11 +20,9 @@ uint64_t seedFromName(const std::string& name) {
   return h;
 }
 
-namespace {
-
-// The samples a chi-square test needs to find `target` at `level`: N·w² must reach the
-// noncentrality of the test's dof, and the dof depends on how many cells expect five samples,
-// so the two are iterated to a fixed point (a few steps: the dof only grows with N).
+// N·w² must reach the noncentrality of the test's dof, and the dof depends on how many cells
+// expect five samples, so the two are iterated to a fixed point (a few steps: the dof only
+// grows with N).
 long long samplesForTarget(const DetectionTarget& target, const std::vector<double>& probability,
                            double total, double level) {
   const double w2 = std::pow(effectForDensityError(target.densityError, target.mass), 2);
@@ -42,6 +40,8 @@ long long samplesForTarget(const DetectionTarget& target, const std::vector<doub
   const double drawn = std::ceil(valid / std::min(1.0, total));
   return drawn >= 9e18 ? std::numeric_limits<long long>::max() : static_cast<long long>(drawn);
 }
+
+namespace {
 
 void validate(const TestOptions& options) {
   if (!(options.significance > 0 && options.significance < 1))
@@ -302,11 +302,13 @@ Verdict TestResult::verdict() const {
   return Verdict::Passed;
 }
 
+bool TestResult::nothingClaimed() const {
+  return std::all_of(probability.begin(), probability.end(), [](double p) { return p == 0; });
+}
+
 std::string TestResult::report() const {
   std::string s = fmt::format("{}\n  domain {}, {} samples", subject, domain.name(), samples);
-  const bool nothingClaimed =
-      std::all_of(probability.begin(), probability.end(), [](double p) { return p == 0; });
-  if (target && nothingClaimed)
+  if (target && nothingClaimed())
     s += fmt::format(
         " ({} to meet with {:.0f}% probability a sampler that returns a sample "
         "with probability {:.2g} where pdf() claims none{})",

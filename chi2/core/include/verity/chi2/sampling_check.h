@@ -93,6 +93,8 @@ struct TestResult {
   long long auditedSamples = 0;
   double auditReach = 0, auditPower = 0;
   bool auditedAll() const { return auditedSamples >= samples; }
+  // The claimed pdf integrates to zero over every cell (every sample a delta lobe, or none).
+  bool nothingClaimed() const;
 
   // The chi-square test ran when there were valid samples, at least two cells after pooling
   // and trustworthy expected counts; otherwise no statistic of it is shown.
@@ -116,6 +118,11 @@ struct TestResult {
   bool passed() const { return verdict() == Verdict::Passed; }
   std::string report() const;
 };
+
+// The samples a chi-square test on cells of these probabilities (summing to `total`, the
+// claimed ∫pdf) draws to find `target` at `level`.
+long long samplesForTarget(const DetectionTarget& target, const std::vector<double>& probability,
+                           double total, double level);
 
 TestResult runSamplingTest(const Subject& subject, const TestOptions& options);
 
