@@ -26,36 +26,39 @@ MicrofacetDistribution RoughConductor::distribution(const TextureQuery& q) const
                                : distributionOf(p_.roughness.evalScalar(q));
 }
 
-Color3 RoughConductor::eval(const TextureQuery& q, const Vector3f& wi, const Vector3f& wo,
-                            TransportMode) const {
-  if (wi.z() <= 0 || wo.z() <= 0) return Color3::Zero();
-  // In double precision, as pdf().
-  const Eigen::Vector3d i = unitDouble(wi), o = unitDouble(wo), sum = i + o;
-  if (sum.squaredNorm() == 0) return Color3::Zero();
-  const Eigen::Vector3d h = sum.normalized();
-  const MicrofacetDistribution dist = distribution(q);
-  const float cosD = float(std::max(i.dot(h), 0.0));
+std::optional<RoughConductor::HalfVector> RoughConductor::halfVector(const Vector3f& wi,
+                                                                     const Vector3f& wo) {
+  if (wi.z() <= 0 || wo.z() <= 0) return std::nullopt;
+  // In double precision from directions renormalised there (unitDouble): at α = 1e-4 the
+  // lobe is narrower than the half vector of a grazing wi read in single precision (a pdf
+  // integral of 0.9947 at 89.9°, 1.354 at 90°).
+  HalfVector g;
+  g.i = unitDouble(wi);
+  g.o = unitDouble(wo);
+  const Eigen::Vector3d sum = g.i + g.o;
+  const double length = sum.norm();
+  if (length == 0) return std::nullopt;
+  g.h = sum / length;
+  g.halfLength = 0.5 * length;
+  return g;
+}
+
+Color3 RoughConductor::value(const TextureQuery& q, const MicrofacetDistribution& dist,
+                             const HalfVector& g) const {
+  const float cosD = float(std::max(g.i.dot(g.h), 0.0));
   const Color3 fresnel = p_.fresnel == FresnelModel::Complex
                              ? fresnelConductor(cosD, p_.eta, p_.k)
                              : fresnelSchlick(cosD, p_.albedo.eval(q));
   const Color3 tint = p_.fresnel == FresnelModel::Complex ? p_.albedo.eval(q) : Color3::Ones();
-  const double value = dist.D(h) * dist.G2(i, o, h) / (4.0 * i.z() * o.z());
+  const double value = dist.D(g.h) * dist.G2(g.i, g.o, g.h) / (4.0 * g.i.z() * g.o.z());
   return sanitize(tint * fresnel * float(value));
 }
 
-float RoughConductor::pdf(const TextureQuery& q, const Vector3f& wi, const Vector3f& wo) const {
-  if (wi.z() <= 0 || wo.z() <= 0) return 0;
-  // In double precision from directions renormalised there (unitDouble): at α = 1e-4 the
-  // lobe is narrower than the half vector of a grazing wi read in single precision (a pdf
-  // integral of 0.9947 at 89.9°, 1.354 at 90°).
-  const Eigen::Vector3d i = unitDouble(wi), o = unitDouble(wo), sum = i + o;
-  if (sum.squaredNorm() == 0) return 0;
-  const Eigen::Vector3d h = sum.normalized();
+float RoughConductor::density(const MicrofacetDistribution& dist, const HalfVector& g) {
   // Reflection Jacobian dωh/dωo = 1/(4 wo·h) (Walter et al. 2007, eq. 14). wo·h = wi·h
   // exactly, but not in floating point near grazing angles, where h is poorly determined:
   // reading wi·h, as the visible-normal density does, makes that factor cancel exactly in
   // the sample weight, which then stays F·G2/G1 <= 1.
-  const MicrofacetDistribution dist = distribution(q);
   if (dist.sampling() == MicrofacetSampling::Normals) {
     // D(m) cos θm sampling has no such factor to cancel, so wi·h must be accurate: for unit
     // wi and wo it is |wi + wo|/2. As a dot product it is (1 + wi·wo)/|wi + wo|, a
@@ -63,23 +66,36 @@ float RoughConductor::pdf(const TextureQuery& q, const Vector3f& wi, const Vecto
     // (90°) it read 6e-17·h.z where the true value was ~1e-4, and pdf() returned up to 1e16
     // (a pdf integral of 2.4e8); at 89.9999° it was up to 30 times too large near the
     // horizon (a pdf integral of 0.508 for 50.0% valid samples).
-    const double halfLength = 0.5 * sum.norm();
-    return sanitize(float(dist.pdfNormal(i, h) / (4.0 * halfLength)));
+    return sanitize(float(dist.pdfNormal(g.i, g.h) / (4.0 * g.halfLength)));
   }
-  const double cosI = i.dot(h);
+  const double cosI = g.i.dot(g.h);
   if (!(cosI > 0)) return 0;
-  return sanitize(float(dist.pdfNormal(i, h) / (4.0 * cosI)));
+  return sanitize(float(dist.pdfNormal(g.i, g.h) / (4.0 * cosI)));
+}
+
+Color3 RoughConductor::eval(const TextureQuery& q, const Vector3f& wi, const Vector3f& wo,
+                            TransportMode) const {
+  const std::optional<HalfVector> g = halfVector(wi, wo);
+  return g ? value(q, distribution(q), *g) : Color3::Zero();
+}
+
+float RoughConductor::pdf(const TextureQuery& q, const Vector3f& wi, const Vector3f& wo) const {
+  const std::optional<HalfVector> g = halfVector(wi, wo);
+  return g ? density(distribution(q), *g) : 0.0f;
 }
 
 std::optional<BsdfSample> RoughConductor::sample(const TextureQuery& q, const Vector3f& wi, float,
-                                                 const Point2f& u, TransportMode mode) const {
+                                                 const Point2f& u, TransportMode) const {
   if (wi.z() <= 0) return std::nullopt;
-  const Vector3f m = distribution(q).sampleNormal(wi, u);
+  const MicrofacetDistribution dist = distribution(q);
+  const Vector3f m = dist.sampleNormal(wi, u);
   if (wi.dot(m) <= 0) return std::nullopt;
   const Vector3f wo = reflect(wi, m).normalized();
-  if (wo.z() <= 0) return std::nullopt;  // reflected below the horizon: an invalid sample
-  // Value and density from (wi, wo) alone, so that the sample agrees with eval() and pdf().
-  return makeSample(wo, eval(q, wi, wo, mode), pdf(q, wi, wo), kReflection | kGlossy);
+  // Value and density from (wi, wo) alone, as eval() and pdf() compute them, so that the
+  // sample agrees with both; reflected below the horizon, an invalid sample.
+  const std::optional<HalfVector> g = halfVector(wi, wo);
+  if (!g) return std::nullopt;
+  return makeSample(wo, value(q, dist, *g), density(dist, *g), kReflection | kGlossy);
 }
 
 namespace {

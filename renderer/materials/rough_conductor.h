@@ -46,6 +46,16 @@ class RoughConductor : public Material {
   bool isTextured() const override { return !p_.albedo.isConstant() || !p_.roughness.isConstant(); }
 
  private:
+  // wi, wo and their half vector in double precision; none below the horizon.
+  struct HalfVector {
+    Eigen::Vector3d i, o, h;
+    double halfLength;  // |wi + wo|/2 = wi·h, without the dot product's cancellation
+  };
+  static std::optional<HalfVector> halfVector(const Vector3f& wi, const Vector3f& wo);
+  // eval() and pdf() at a half vector, which sample() computes once for both.
+  Color3 value(const TextureQuery& q, const MicrofacetDistribution& dist,
+               const HalfVector& g) const;
+  static float density(const MicrofacetDistribution& dist, const HalfVector& g);
   MicrofacetDistribution distribution(const TextureQuery& q) const;
   // The distribution for a roughness texture's value r.
   MicrofacetDistribution distributionOf(float r) const;

@@ -30,7 +30,7 @@ float fresnelOf(const Eigen::Vector3d& wi, const Eigen::Vector3d& wo, const Eige
 }  // namespace
 
 bool RoughDielectric::geometry(const Vector3f& wiF, const Vector3f& woF, Geometry& g) const {
-  if (wiF.z() == 0 || woF.z() == 0) return false;
+  if (indexMatched_ || wiF.z() == 0 || woF.z() == 0) return false;
   // Double precision: at α = 1e-4 and grazing incidence the lobe is narrower than the half
   // vector read in single precision (pdf integrals of 0.9948 at 89.9°, 1.354 at 90°).
   g.wi = unitDouble(wiF);
@@ -47,54 +47,58 @@ bool RoughDielectric::geometry(const Vector3f& wiF, const Vector3f& woF, Geometr
   if (g.h.z() < 0) g.h = -g.h;
   if (!(g.h.z() > 0)) return false;
   // Each direction must lie on its own side of the microfacet too.
-  return wi.dot(g.h) * wi.z() > 0 && wo.dot(g.h) * wo.z() > 0;
+  if (!(wi.dot(g.h) * wi.z() > 0 && wo.dot(g.h) * wo.z() > 0)) return false;
+  g.fresnel = fresnelOf(wi, wo, g.h, ior_, g.reflection);
+  return true;
 }
 
-Color3 RoughDielectric::eval(const TextureQuery&, const Vector3f& wiF, const Vector3f& woF,
-                             TransportMode mode) const {
-  if (indexMatched_) return Color3::Zero();
-  Geometry g;
-  if (!geometry(wiF, woF, g)) return Color3::Zero();
+float RoughDielectric::value(const Geometry& g, TransportMode mode) const {
   const Eigen::Vector3d &wi = g.wi, &wo = g.wo;
   const double cosI = wi.dot(g.h), cosO = wo.dot(g.h);
-  const double fresnel = fresnelOf(wi, wo, g.h, ior_, g.reflection);
   const double dg = dist_.D(g.h) * dist_.G2(wi, wo, g.h);
   double value;
   if (g.reflection) {
-    value = fresnel * dg / (4.0 * std::abs(wi.z() * wo.z()));
+    value = g.fresnel * dg / (4.0 * std::abs(wi.z() * wo.z()));
   } else {
     const double denom = g.etaI * cosI + g.etaO * cosO;
     const double eta2 = mode == TransportMode::Radiance ? g.etaI * g.etaI : g.etaO * g.etaO;
-    value = eta2 * (1.0 - fresnel) * dg * std::abs(cosI * cosO) /
+    value = eta2 * (1.0 - g.fresnel) * dg * std::abs(cosI * cosO) /
             (std::abs(wi.z() * wo.z()) * denom * denom);
   }
-  return Color3::Constant(sanitize(float(value)));
+  return sanitize(float(value));
 }
 
-float RoughDielectric::pdf(const TextureQuery&, const Vector3f& wiF, const Vector3f& woF) const {
-  if (indexMatched_) return 0;
-  Geometry g;
-  if (!geometry(wiF, woF, g)) return 0;
+float RoughDielectric::density(const Geometry& g) const {
   const Eigen::Vector3d &wi = g.wi, &wo = g.wo;
   const double cosI = wi.dot(g.h), cosO = wo.dot(g.h);
   // Normals are sampled as seen from wi's side, flipped to the upper hemisphere.
   const Eigen::Vector3d wiUp = wi.z() > 0 ? wi : Eigen::Vector3d(-wi);
   const double pdfM = dist_.pdfNormal(wiUp, g.h);
-  const double fresnel = fresnelOf(wi, wo, g.h, ior_, g.reflection);
   double pdf;
   if (g.reflection) {
     // 1/(4 |wo·h|), read as 1/(4 |wi·h|): equal, but the latter cancels exactly against the
-    // visible-normal density (see RoughConductor::pdf).
-    pdf = fresnel * pdfM / (4.0 * std::abs(cosI));
+    // visible-normal density (see RoughConductor::density).
+    pdf = g.fresnel * pdfM / (4.0 * std::abs(cosI));
   } else {
     // Refraction Jacobian dωh/dωo = ηo² |wo·h| / (ηi wi·h + ηo wo·h)² (Walter eq. 17).
     const double denom = g.etaI * cosI + g.etaO * cosO;
-    pdf = (1.0 - fresnel) * pdfM * g.etaO * g.etaO * std::abs(cosO) / (denom * denom);
+    pdf = (1.0 - g.fresnel) * pdfM * g.etaO * g.etaO * std::abs(cosO) / (denom * denom);
   }
   return sanitize(float(pdf));
 }
 
-std::optional<BsdfSample> RoughDielectric::sample(const TextureQuery& q, const Vector3f& wi,
+Color3 RoughDielectric::eval(const TextureQuery&, const Vector3f& wi, const Vector3f& wo,
+                             TransportMode mode) const {
+  Geometry g;
+  return geometry(wi, wo, g) ? Color3::Constant(value(g, mode)) : Color3::Zero();
+}
+
+float RoughDielectric::pdf(const TextureQuery&, const Vector3f& wi, const Vector3f& wo) const {
+  Geometry g;
+  return geometry(wi, wo, g) ? density(g) : 0.0f;
+}
+
+std::optional<BsdfSample> RoughDielectric::sample(const TextureQuery&, const Vector3f& wi,
                                                   float uLobe, const Point2f& u,
                                                   TransportMode mode) const {
   if (indexMatched_) return sampleSmoothDielectric(wi, ior_, uLobe, mode);
@@ -119,8 +123,11 @@ std::optional<BsdfSample> RoughDielectric::sample(const TextureQuery& q, const V
     if (wo.z() * wi.z() >= 0) return std::nullopt;
     lobe = kTransmission | kGlossy;
   }
-  // Value and density from (wi, wo) alone, so that the sample agrees with eval() and pdf().
-  return makeSample(wo, eval(q, wi, wo, mode), pdf(q, wi, wo), lobe, eta);
+  // Value and density from (wi, wo) alone, as eval() and pdf() compute them, so that the
+  // sample agrees with both.
+  Geometry g;
+  if (!geometry(wi, wo, g)) return std::nullopt;
+  return makeSample(wo, Color3::Constant(value(g, mode)), density(g), lobe, eta);
 }
 
 namespace {

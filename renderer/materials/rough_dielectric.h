@@ -46,8 +46,14 @@ class RoughDielectric : public Material {
     Eigen::Vector3d wi, wo, h;
     double etaI, etaO;
     bool reflection;
+    double fresnel;  // fresnelOf the configuration, read by both value and density
   };
+  // False where eval() and pdf() are zero (index-matched, on the horizon, or no microfacet
+  // joins wi and wo).
   bool geometry(const Vector3f& wi, const Vector3f& wo, Geometry& g) const;
+  // eval() and pdf() of a configuration, which sample() computes once for both.
+  float value(const Geometry& g, TransportMode mode) const;
+  float density(const Geometry& g) const;
 
   MicrofacetDistribution dist_;
   float ior_;
