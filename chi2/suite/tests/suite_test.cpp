@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <optional>
 
 #include "failure_figure.h"
@@ -39,11 +40,21 @@ void expectPassed(const TestResult& r) {
   record("compared_samples", static_cast<double>(r.auditedSamples));
   if (r.chiSquareRan()) {
     record("dof", r.chiSquare.dof);
+    record("statistic", r.chiSquare.statistic);
+    record("p_value", r.chiSquare.pValue);
     record("density_error_quarter", r.chiSquarePower.densityError(kStatedMass));
     record("density_error_sixteenth", r.chiSquarePower.densityError(kStatedSmallMass));
   }
+  record("quadrature_error", r.quadratureError);
   if (const std::optional<double> d = r.integralPower.detectable())
     record("normalisation_error", *d);
+  // Where the time went, phase by phase (scripts/chi2_power_report sums them).
+  for (int p = 0; p < static_cast<int>(Phase::Count); ++p)
+    if (const double s = r.phases[static_cast<Phase>(p)]; s > 0) {
+      std::string key = fmt::format("seconds_{}", phaseName(static_cast<Phase>(p)));
+      std::replace(key.begin(), key.end(), ' ', '_');
+      record(key.c_str(), s);
+    }
   if (r.passed()) return;
   const std::string message = r.report() + "\n" + testing::failureFigure(r);
   EXPECT_EQ(r.inconclusiveReason(), "") << message;
