@@ -61,7 +61,7 @@ std::vector<validation::JunitCase> junitCases(const chi2::FamilyResult& r) {
                                              : validation::JunitCase::Outcome::Error;
     if (v != chi2::Verdict::Passed) {
       j.message = v == chi2::Verdict::Inconclusive
-                      ? c.test.inconclusiveReason()
+                      ? c.inconclusiveReason()
                       : fmt::format("{}", fmt::join(c.failures(), ", "));
       j.details = c.report();
     }

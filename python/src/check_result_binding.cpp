@@ -17,7 +17,7 @@ void bindCheckResult(py::module_& m) {
       .def_property_readonly("failures", &CheckResult::failures,
                              "the names of the checks that failed")
       .def_property_readonly("inconclusive_reason",
-                             [](const CheckResult& r) { return r.test.inconclusiveReason(); })
+                             [](const CheckResult& r) { return r.inconclusiveReason(); })
       .def_property_readonly("samples", [](const CheckResult& r) { return r.test.samples; })
       .def_property_readonly("valid", [](const CheckResult& r) { return r.test.valid; })
       .def_property_readonly("delta_samples", [](const CheckResult& r) { return r.deltaSamples; })

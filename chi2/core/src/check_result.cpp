@@ -23,6 +23,19 @@ CheckResult runCheck(const Subject& subject, const CheckOptions& options,
   return r;
 }
 
+Verdict CheckResult::verdict() const {
+  if (delta.ran() && !delta.passed()) return Verdict::Failed;
+  const Verdict v = test.verdict();
+  if (v == Verdict::Passed && delta.ran() && !delta.inconclusiveReason().empty())
+    return Verdict::Inconclusive;
+  return v;
+}
+
+std::string CheckResult::inconclusiveReason() const {
+  const std::string reason = test.inconclusiveReason();
+  return reason.empty() && delta.ran() ? delta.inconclusiveReason() : reason;
+}
+
 std::vector<std::string> CheckResult::failures() const {
   std::vector<std::string> out;
   if (test.outside > 0) out.push_back("samples outside the domain");
@@ -32,6 +45,7 @@ std::vector<std::string> CheckResult::failures() const {
   } else {
     if (!test.chiSquare.passed(test.significance)) out.push_back("chi-square");
     if (!test.integral.passed) out.push_back("pdf integral");
+    if (verdict() == Verdict::Inconclusive) out.push_back("inconclusive");
   }
   for (int d = 0; d < static_cast<int>(Defect::Count); ++d)
     if (test.audit.count(static_cast<Defect>(d)) > 0)
@@ -51,7 +65,8 @@ std::string CheckResult::report() const {
   if (deltaSamples > 0)
     s += fmt::format("\n  {} delta-lobe samples (not histogrammed)", deltaSamples);
   if (delta.ran())
-    s += fmt::format("\n{}\n  {} with the delta lobes", delta.report(), verdictName(verdict()));
+    s += fmt::format("\n{}\n  {} with the delta lobes{}", delta.report(), verdictName(verdict()),
+                     verdict() == Verdict::Inconclusive ? ": " + inconclusiveReason() : "");
   if (!passed()) s += fmt::format("\n  failed: {}", fmt::join(failures(), ", "));
   return s;
 }

@@ -242,7 +242,13 @@ DeltaCheck checkDeltaLobes(const BsdfModel& model, const Eigen::Vector3d& wi,
     const Eigen::ArrayXd variance =
         ((total.sumSquares[l] - n * lr.albedo.square()) / std::max(1.0, n - 1)).max(0.0);
     lr.albedoHalfWidth = tQuantile * (variance / n).sqrt();
-    if (lr.expected.albedo)
+    const bool expectsNothing = lr.expected.albedo && (*lr.expected.albedo == 0).all();
+    if (lr.expected.albedo && k < kMinAlbedoDraws && !(k == 0 && expectsNothing))
+      lr.albedoUntested = fmt::format(
+          "the {} lobe was drawn {} times in {} draws (its share at most {:.3g}): a stated "
+          "albedo needs {} draws of its lobe for a t interval; draw more, or state its share",
+          deltaLobeName(DeltaLobe(l)), k, samples, lr.shareUpper, kMinAlbedoDraws);
+    else if (lr.expected.albedo)
       for (int c = 0; c < r.components; ++c) {
         const Eigen::ArrayXd& e = *lr.expected.albedo;
         const double expected = e.size() == 1 ? e[0] : e[c];
@@ -272,6 +278,13 @@ bool DeltaCheck::passed() const {
   return failures().empty();
 }
 
+std::string DeltaCheck::inconclusiveReason() const {
+  std::string reason;
+  for (const DeltaLobeResult& l : lobes)
+    if (!l.albedoUntested.empty()) reason += (reason.empty() ? "" : "; ") + l.albedoUntested;
+  return reason;
+}
+
 std::string DeltaCheck::report() const {
   std::string s = fmt::format(
       "  delta lobes, on {} draws of their own: {} delta samples; accepted directions: mirror, "
@@ -289,10 +302,14 @@ std::string DeltaCheck::report() const {
         r.sharePassed ? "pass" : "FAIL", deltaLobeName(DeltaLobe(l)), r.share, confidence,
         r.shareLower, r.shareUpper,
         r.expected.share ? fmt::format(", expected {:.6f}", *r.expected.share) : "");
-    s += fmt::format("  [{}] {}: albedo {} +- {} ({:.6g}% t interval){}\n",
-                     r.albedoPassed ? "pass" : "FAIL", deltaLobeName(DeltaLobe(l)), value(r.albedo),
-                     value(r.albedoHalfWidth), confidence,
-                     r.expected.albedo ? ", expected " + value(*r.expected.albedo) : "");
+    if (!r.albedoUntested.empty())
+      s += fmt::format("  [untested] {}: albedo {}, expected {}: {}\n", deltaLobeName(DeltaLobe(l)),
+                       value(r.albedo), value(*r.expected.albedo), r.albedoUntested);
+    else
+      s += fmt::format("  [{}] {}: albedo {} +- {} ({:.6g}% t interval){}\n",
+                       r.albedoPassed ? "pass" : "FAIL", deltaLobeName(DeltaLobe(l)),
+                       value(r.albedo), value(r.albedoHalfWidth), confidence,
+                       r.expected.albedo ? ", expected " + value(*r.expected.albedo) : "");
   }
   s += fmt::format("  [{}] delta directions: {} in no accepted direction (tolerance {:.1e}){}\n",
                    wrongDirections == 0 ? "pass" : "FAIL", wrongDirections, directionTolerance,

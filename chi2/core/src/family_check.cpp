@@ -171,7 +171,7 @@ Row rowOf(const FamilyResult& r, size_t i) {
   }
   const CheckResult& c = r.results[i];
   const TestResult& t = c.test;
-  row.failed = whatFailed(c, t.inconclusiveReason());
+  row.failed = whatFailed(c, c.inconclusiveReason());
   if (t.chiSquareRan()) {
     row.statistic = fmt::format("chi-square {:.4g} on {} dof, p = {:.3g}", t.chiSquare.statistic,
                                 t.chiSquare.dof, t.chiSquare.pValue);
@@ -391,7 +391,7 @@ std::string FamilyResult::json() const {
     }
     const TestResult& t = results[i].test;
     e.update({{"failures", results[i].failures()},
-              {"inconclusive_reason", t.inconclusiveReason()},
+              {"inconclusive_reason", results[i].inconclusiveReason()},
               {"samples", t.samples},
               {"valid_samples", t.valid},
               {"seconds", t.seconds},

@@ -2,7 +2,8 @@
 // glass (Fresnel-chosen reflection or refraction, pbrt's radiance scaling 1/η²), thin glass
 // (pbrt's ThinDielectric) and a mirror over a diffuse base pass, and are PASSED, never
 // INCONCLUSIVE; a refraction with the wrong index, a tilted mirror and a refraction that
-// forgets 1/η² against its stated albedo fail.
+// forgets 1/η² against its stated albedo fail; a stated albedo of a lobe drawn too rarely is
+// untested, and says so.
 //
 // Level: the correct subjects are kCorrectChecks checks holding kCorrectTests statistical
 // tests (two per check and one per stated share or albedo), at a family-wise level of 1% with
@@ -329,6 +330,43 @@ TEST(DeltaLobes, RefractionWithoutRadianceScalingFailsItsStatedAlbedo) {
   EXPECT_TRUE(r.failed("delta albedo")) << failed(r);
   EXPECT_FALSE(r.failed("delta direction")) << failed(r);
   EXPECT_FALSE(r.failed("delta share")) << failed(r);
+}
+
+// A lobe that no draw samples has an albedo interval of width 0, so any stated albedo above 0
+// failed, however small (a mirror's pass-through of 1e-9, which 10⁵ draws could never see).
+// Too few draws of a lobe leave its stated albedo untested and the check INCONCLUSIVE, saying
+// why; an albedo of exactly 0 for a lobe never drawn is what was seen, and passes.
+TEST(DeltaLobes, AnAlbedoOfALobeNeverDrawnIsUntestedNotFailed) {
+  const Vec3 wi = incidence(30);
+  BsdfCheckOptions o = options("mirror with a pass-through of 1e-9");
+  o.delta.expect(DeltaLobe::PassThrough).albedo = Eigen::ArrayXd::Constant(1, 1e-9);
+  CheckResult r = checkBsdf(Mirror{}.model(), wi, o);
+  EXPECT_EQ(r.verdict(), Verdict::Inconclusive) << failed(r);
+  EXPECT_FALSE(r.failed("delta albedo")) << failed(r);
+  EXPECT_NE(r.inconclusiveReason().find("pass-through lobe was drawn 0 times"), std::string::npos)
+      << r.inconclusiveReason();
+  EXPECT_NE(r.report().find("[untested] pass-through"), std::string::npos) << r.report();
+
+  o.delta.expect(DeltaLobe::PassThrough).albedo = Eigen::ArrayXd::Constant(1, 0.0);
+  r = checkBsdf(Mirror{}.model(), wi, o);
+  EXPECT_EQ(r.verdict(), Verdict::Passed) << failed(r);
+}
+
+// Glass of index 1.0202 reflects 10⁻⁴ at normal incidence: about 10 of 10⁵ draws, too few for
+// the reflection's albedo, while the shares' exact intervals still test both lobes.
+TEST(DeltaLobes, AnAlbedoOfALobeDrawnAFewTimesIsUntested) {
+  const Vec3 wi = incidence(0);
+  BsdfCheckOptions o = options("glass 1.0202");
+  expectGlass(o, wi, 1.0202);
+  const CheckResult r = checkBsdf(glassModel({1.0202}), wi, o);
+  const long long drawn = r.delta.lobes[int(DeltaLobe::Reflection)].count;
+  EXPECT_GT(drawn, 0);
+  EXPECT_LT(drawn, kMinAlbedoDraws);
+  EXPECT_EQ(r.verdict(), Verdict::Inconclusive) << failed(r);
+  EXPECT_NE(r.inconclusiveReason().find("reflection lobe was drawn"), std::string::npos)
+      << r.inconclusiveReason();
+  EXPECT_TRUE(r.delta.lobes[int(DeltaLobe::Reflection)].sharePassed) << failed(r);
+  EXPECT_TRUE(r.delta.lobes[int(DeltaLobe::Refraction)].albedoPassed) << failed(r);
 }
 
 TEST(DeltaLobes, BadOptionsAreNamed) {

@@ -54,11 +54,12 @@ struct CheckResult {
   DeltaCheck delta;            // their own checks (delta_check.h), where there were any
 
   // PASSED, FAILED, or INCONCLUSIVE when a check could not run with its stated power
-  // (test.inconclusiveReason() says why); FAILED too when the delta lobes fail. passed() only
-  // on PASSED.
-  Verdict verdict() const {
-    return delta.ran() && !delta.passed() ? Verdict::Failed : test.verdict();
-  }
+  // (inconclusiveReason() says why); FAILED too when the delta lobes fail, and INCONCLUSIVE
+  // when a sampling test that passed leaves a delta lobe's stated albedo untested. passed()
+  // only on PASSED.
+  Verdict verdict() const;
+  // The sampling test's reason (TestResult::inconclusiveReason), else the delta lobes'.
+  std::string inconclusiveReason() const;
   bool passed() const { return verdict() == Verdict::Passed; }
   // "chi-square", "pdf integral", "samples outside the domain", "inconclusive" and the
   // audit's defects ("weight != eval*cos/pdf", "reciprocity", ...: defectName()); empty

@@ -15,6 +15,10 @@
 // together at the Šidák level for their number (Šidák 1967 holds for correlated normal means),
 // so that each stated albedo counts as one test, and its interval is widened by
 // kWeightTolerance relative, the per-sample weights' tolerance (a weight stored in float).
+// The t interval rests on the central limit theorem for the lobe's weights, which a handful
+// of draws in the lobe does not give (a lobe never drawn has an interval of width 0): a
+// stated albedo above 0 of a lobe drawn fewer than kMinAlbedoDraws times is not tested, and
+// the check is INCONCLUSIVE, saying so, rather than FAILED or PASSED.
 #pragma once
 
 #include <verity/chi2/audit.h>
@@ -53,6 +57,10 @@ struct DeltaCheckOptions {
   int statisticalTests() const;
 };
 
+// The fewest draws of a lobe on which its stated albedo is tested (the rule of thumb for the
+// central limit theorem); a lobe drawn 0 times passes an albedo of exactly 0.
+inline constexpr long long kMinAlbedoDraws = 30;
+
 // One lobe, measured over all draws.
 struct DeltaLobeResult {
   long long count = 0;
@@ -60,6 +68,8 @@ struct DeltaLobeResult {
   Eigen::ArrayXd albedo, albedoHalfWidth;            // per component; the t interval's half width
   DeltaExpectation expected;
   bool sharePassed = true, albedoPassed = true;
+  // Why a stated albedo was not tested (too few draws of the lobe); empty when it was.
+  std::string albedoUntested;
 };
 
 struct DeltaCheck {
@@ -77,6 +87,9 @@ struct DeltaCheck {
   // Whether it ran (checkBsdf runs it only when there are delta samples or expectations).
   bool ran() const { return samples > 0; }
   bool passed() const;
+  // Why a stated expectation could not be tested (DeltaLobeResult::albedoUntested); empty
+  // when every one was.
+  std::string inconclusiveReason() const;
   // "delta direction", "delta share", "delta albedo" and the audit's defects prefixed by
   // "delta " ("delta non-finite value"); empty when passed.
   std::vector<std::string> failures() const;
