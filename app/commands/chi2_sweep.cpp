@@ -1,7 +1,6 @@
 #include "commands/chi2_sweep.h"
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 #include <unistd.h>
 
 #include <charconv>
@@ -44,30 +43,6 @@ void writeText(const std::string& path, const std::string& text) {
   std::ofstream out(path);
   out << text;
   if (!out) throw VerityError(path, "", "cannot be written");
-}
-
-std::vector<validation::JunitCase> junitCases(const chi2::FamilyResult& r) {
-  std::vector<validation::JunitCase> cases;
-  for (size_t i = 0; i < r.configurations.size(); ++i) {
-    const chi2::CheckResult& c = r.results[i];
-    validation::JunitCase j;
-    j.name = r.configurations[i].name;
-    j.seconds = c.test.seconds;
-    const chi2::Verdict v = c.verdict();
-    j.type = chi2::verdictName(v);
-    // FAILED is a failure; INCONCLUSIVE an error, never shown as passed.
-    j.outcome = v == chi2::Verdict::Passed   ? validation::JunitCase::Outcome::Passed
-                : v == chi2::Verdict::Failed ? validation::JunitCase::Outcome::Failure
-                                             : validation::JunitCase::Outcome::Error;
-    if (v != chi2::Verdict::Passed) {
-      j.message = v == chi2::Verdict::Inconclusive
-                      ? c.inconclusiveReason()
-                      : fmt::format("{}", fmt::join(c.failures(), ", "));
-      j.details = c.report();
-    }
-    cases.push_back(std::move(j));
-  }
-  return cases;
 }
 
 }  // namespace
@@ -148,7 +123,7 @@ chi2::Verdict runChi2Sweep(const std::string& materialJson, const std::vector<Sw
               r.markdown() +
                   (figures.empty() ? "" : "\nFigures of those that did not pass:\n\n" + figures));
     writeText(outputPrefix + ".json", r.json());
-    validation::writeJunit(outputPrefix + ".xml", "verity chi2 " + materialJson, junitCases(r));
+    validation::writeJunit(outputPrefix + ".xml", r.junit("verity chi2 " + materialJson));
     std::cout << fmt::format("  wrote {0}.md, {0}.json and {0}.xml (JUnit)\n", outputPrefix);
     for (size_t k : drawn)
       std::cout << fmt::format(

@@ -133,6 +133,9 @@ void bindFamily(py::module_& m) {
                              [](const chi2::FamilyResult& r) { return r.perTestLevel; })
       .def("markdown", &chi2::FamilyResult::markdown)
       .def("json", &chi2::FamilyResult::json)
+      .def("junit", &chi2::FamilyResult::junit, py::arg("suite") = "verity.check_bsdf_family",
+           "JUnit XML for CI: one test case per configuration, FAILED a <failure>, "
+           "INCONCLUSIVE an <error>")
       .def_property_readonly("report", &chi2::FamilyResult::report)
       .def("__str__", &chi2::FamilyResult::report)
       .def("__repr__", [](const chi2::FamilyResult& r) {

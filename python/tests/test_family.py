@@ -6,6 +6,7 @@ Level: the family's own, ALPHA = 1e-3 over its 12 statistical tests (Sidak), as 
 checks are at 1e-3 each. These tests are about behaviour, not power: 10^5 samples on the grid
 of cells; the planted error (the example's broken GGX) is found with chi-square p < 1e-30."""
 import json
+from xml.etree import ElementTree
 
 import pytest
 import verity
@@ -37,6 +38,17 @@ def test_a_defect_at_one_corner_is_found_there_and_listed_first():
     assert data["configurations"][0]["verdict"] == "FAILED"
     assert "chi-square" in data["configurations"][0]["failures"]
     assert r.markdown().index("| FAILED |") < r.markdown().index("| PASSED |")
+    # JUnit for CI: one test case per configuration, the failed ones with a <failure>.
+    suite = ElementTree.fromstring(r.junit("ggx family")).find("testsuite")
+    assert suite.get("name") == "ggx family" and suite.get("tests") == "6"
+    cases = {c.get("name"): c for c in suite.iter("testcase")}
+    assert set(cases) == {c["name"] for c in configurations}
+    for c in configurations:
+        failure = cases[c["name"]].find("failure")
+        assert (failure is None) == c["result"].passed
+        if failure is not None:
+            assert failure.get("type") == "FAILED" and "chi-square" in failure.get("message")
+    assert suite.get("failures") == str(sum(not c["result"].passed for c in configurations))
 
 
 def test_a_correct_family_passes():

@@ -2,6 +2,7 @@
 #include <fmt/ranges.h>
 #include <verity/chi2/family_check.h>
 #include <verity/chi2/significance.h>
+#include <verity/stats/junit.h>
 
 #include <algorithm>
 #include <cmath>
@@ -340,6 +341,33 @@ std::string FamilyResult::markdown() const {
                      cell(row.failed), cell(row.statistic), cell(row.defect), row.caught);
   }
   return s;
+}
+
+std::string FamilyResult::junit(const std::string& suite) const {
+  std::vector<stats::JunitCase> cases;
+  for (size_t i = 0; i < configurations.size(); ++i) {
+    stats::JunitCase j;
+    j.name = configurations[i].name;
+    const Verdict v = verdictOf(i);
+    j.type = verdictName(v);
+    // FAILED is a failure; INCONCLUSIVE an error, never shown as passed.
+    j.outcome = v == Verdict::Passed   ? stats::JunitCase::Outcome::Passed
+                : v == Verdict::Failed ? stats::JunitCase::Outcome::Failure
+                                       : stats::JunitCase::Outcome::Error;
+    const auto describe = [&](const auto& c, double seconds) {
+      j.seconds = seconds;
+      if (v == Verdict::Passed) return;
+      j.message = v == Verdict::Inconclusive ? c.inconclusiveReason()
+                                             : fmt::format("{}", fmt::join(c.failures(), ", "));
+      j.details = c.report();
+    };
+    if (stochastic())
+      describe(stochasticResults[i], stochasticResults[i].seconds);
+    else
+      describe(results[i], results[i].test.seconds);
+    cases.push_back(std::move(j));
+  }
+  return stats::junitXml(suite, cases);
 }
 
 std::string FamilyResult::json() const {

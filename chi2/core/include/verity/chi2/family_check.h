@@ -100,6 +100,9 @@ struct FamilyResult {
   std::string report() const;
   std::string markdown() const;
   std::string json() const;
+  // JUnit XML for CI (Jenkins, GitLab), a suite named `suite` with one test case per
+  // configuration: FAILED a <failure>, INCONCLUSIVE an <error>, each with its report.
+  std::string junit(const std::string& suite) const;
 };
 
 // The BSDF at one point of the parameter box (values in the order of the parameters).
