@@ -350,8 +350,14 @@ std::vector<double> BsdfModelSubject::jumpCones() const {
     // perpendicular to n (Walter et al. 2007, eq. 16), i.e. on the cone
     // n·ωo = −ηi (n·ωi) / ηo; a distribution with D > 0 at the horizon (GGX at large
     // alpha) jumps there.
-    const double cosI = setup_.wi.z();
-    const double etaI = indexOn(setup_.wi);
+    // From wi renormalised in double, as a BSDF that computes in double from a float wi
+    // (Verity's rough dielectric) sees it: the float-rounded wi of a family is up to 3·10⁻⁸
+    // from unit length, and at α 4 and η 1.01 the dense lobe meets this edge, so a cone
+    // declared from the raw wi left a sliver 2·10⁻⁹ wide where the BSDF's density was not
+    // zero but the cells' was, and samples there failed the check outright.
+    const Vector3d wi = setup_.wi.normalized();
+    const double cosI = wi.z();
+    const double etaI = indexOn(wi);
     const double etaO = cosI > 0 ? model_.interiorIndex : model_.exteriorIndex;
     cosAngles.push_back(-etaI * cosI / etaO);
   }
@@ -373,7 +379,7 @@ std::vector<double> BsdfModelSubject::breakpointCrossingsX(double z) const {
 }
 
 std::vector<Point2d> BsdfModelSubject::peaks() const {
-  const Vector3d& wi = setup_.wi;
+  const Vector3d wi = setup_.wi.normalized();  // as jumpCones() reads it
   std::vector<Point2d> out{sphereCoords(setup_.frame.toWorld(Vector3d(-wi.x(), -wi.y(), wi.z())))};
   if (model_.relativeIndex() != 1) {
     // Snell's law about the shading normal, from wi's side.
