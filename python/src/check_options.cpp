@@ -12,6 +12,8 @@ namespace verity::python {
 const std::vector<std::string> kCheckKeywords = {
     "name",   "alpha",       "samples",         "seed", "resolution", "power",
     "detect", "max_samples", "audited_samples", "cells"};
+const std::vector<std::string> kStochasticKeywords = {"name",       "alpha", "samples", "seed",
+                                                      "resolution", "power", "strata"};
 const std::vector<std::string> kBsdfKeywords = {"weight_tolerance",
                                                 "reciprocity_tolerance",
                                                 "direction_rounding",
@@ -87,6 +89,15 @@ void readCheckOptions(const py::kwargs& kw, const std::string& check, chi2::Chec
       throw py::value_error(fmt::format("{}: {}", check, e.what()));
     }
   }
+}
+
+void readStochasticOptions(const py::kwargs& kw, const std::string& check,
+                           chi2::StochasticCheckOptions& o) {
+  readCheckOptions(kw, check, o);
+  read(kw, "strata", o.strata);
+  if (!(o.strata >= 2 && o.strata % 2 == 0))
+    throw py::value_error(
+        fmt::format("{}: strata = {}: must be even and at least 2", check, o.strata));
 }
 
 void readBsdfOptions(const py::kwargs& kw, const std::string& check, chi2::BsdfCheckOptions& o) {

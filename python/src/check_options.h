@@ -3,6 +3,7 @@
 #pragma once
 
 #include <verity/chi2/bsdf_adapter.h>
+#include <verity/chi2/stochastic_check.h>
 
 #include "callback.h"
 
@@ -18,11 +19,16 @@ void readCheckOptions(const py::kwargs& kw, const std::string& check, chi2::Chec
 // (either may be None).
 void readBsdfOptions(const py::kwargs& kw, const std::string& check, chi2::BsdfCheckOptions& o);
 
+// check_stochastic_bsdf's: name, alpha, samples, seed, resolution and power as above, and
+// strata (each cell's eval at strata × strata directions; even).
+void readStochasticOptions(const py::kwargs& kw, const std::string& check,
+                           chi2::StochasticCheckOptions& o);
+
 // TypeError naming any keyword in kw that is not in `known`.
 void requireKnown(const py::kwargs& kw, const std::string& check,
                   const std::vector<std::string>& known);
 
 // The keywords each reads.
-extern const std::vector<std::string> kCheckKeywords, kBsdfKeywords;
+extern const std::vector<std::string> kCheckKeywords, kBsdfKeywords, kStochasticKeywords;
 
 }  // namespace verity::python

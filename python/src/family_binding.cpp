@@ -4,6 +4,8 @@
 #include <pybind11/stl.h>
 #include <verity/chi2/family_check.h>
 
+#include <optional>
+
 #include "check_options.h"
 #include "python_bsdf.h"
 
@@ -13,7 +15,8 @@ namespace {
 
 // The keywords of check_bsdf_family beside the checks' own (kCheckKeywords, kBsdfKeywords):
 // alpha is the family-wise level, and seed draws the interior points.
-const std::vector<std::string> kFamilyKeywords = {"incidences", "from_below", "interior_points"};
+const std::vector<std::string> kFamilyKeywords = {"incidences", "from_below", "interior_points",
+                                                  "stochastic"};
 
 // "name=(lo, hi)" or "name=(lo, hi, 'log')", in the dict's order.
 std::vector<chi2::FamilyParameter> readParameters(const py::dict& parameters,
@@ -39,23 +42,32 @@ std::vector<chi2::FamilyParameter> readParameters(const py::dict& parameters,
 chi2::FamilyResult checkBsdfFamily(py::object factory, const py::dict& parameters,
                                    const py::kwargs& kw) {
   const std::string check = "check_bsdf_family";
-  std::vector<std::string> known = kCheckKeywords;
-  known.insert(known.end(), kBsdfKeywords.begin(), kBsdfKeywords.end());
+  chi2::FamilyOptions options;
+  options.stochastic = kw.contains("stochastic") && kw["stochastic"].cast<bool>();
+  // The mean-weight mode takes check_stochastic_bsdf's keywords, the others check_bsdf's.
+  std::vector<std::string> known = options.stochastic ? kStochasticKeywords : kCheckKeywords;
+  if (!options.stochastic) known.insert(known.end(), kBsdfKeywords.begin(), kBsdfKeywords.end());
   known.insert(known.end(), kFamilyKeywords.begin(), kFamilyKeywords.end());
   known.erase(std::find(known.begin(), known.end(), "name"));
   requireKnown(kw, check, known);
   if (kw.contains("samples") && kw.contains("detect"))
     throw py::type_error(check +
                          ": samples and detect exclude each other (detect sizes each check)");
-  chi2::FamilyOptions options;
-  readBsdfOptions(kw, check, options.check);
-  // alpha is the family's level; each check's is its Šidák share, set by the family.
-  options.level = options.check.significance;
-  if (kw.contains("samples") && !kw.contains("detect")) options.check.detect.reset();
-  if (options.check.seed) {
-    options.seed = *options.check.seed;
+  std::optional<uint64_t> seed;
+  if (options.stochastic) {
+    readStochasticOptions(kw, check, options.stochasticCheck);
+    options.level = options.stochasticCheck.significance;
+    seed = options.stochasticCheck.seed;
+    options.stochasticCheck.seed.reset();
+  } else {
+    readBsdfOptions(kw, check, options.check);
+    // alpha is the family's level; each check's is its Šidák share, set by the family.
+    options.level = options.check.significance;
+    if (kw.contains("samples") && !kw.contains("detect")) options.check.detect.reset();
+    seed = options.check.seed;
     options.check.seed.reset();  // each configuration's seed follows from its name
   }
+  if (seed) options.seed = *seed;
   if (kw.contains("incidences")) options.incidences = kw["incidences"].cast<std::vector<double>>();
   if (kw.contains("from_below")) options.fromBelow = kw["from_below"].cast<bool>();
   if (kw.contains("interior_points")) options.interiorPoints = kw["interior_points"].cast<int>();
@@ -71,13 +83,15 @@ chi2::FamilyResult checkBsdfFamily(py::object factory, const py::dict& parameter
     const std::string at = fmt::format("{} at {}", check, py::repr(arguments).cast<std::string>());
     const bool sequence = py::isinstance<py::tuple>(bsdf) || py::isinstance<py::list>(bsdf);
     const py::tuple callables = sequence ? py::tuple(bsdf) : py::tuple();
-    if (callables.size() != 3 && callables.size() != 5)
-      throw py::type_error(
-          fmt::format("{}: the factory must return (sample, eval, pdf) or (sample, eval, pdf, "
-                      "exterior_index, interior_index); it returned {}",
-                      at, py::repr(bsdf).cast<std::string>()));
+    const bool pair = options.stochastic && callables.size() == 2;  // no pdf to give
+    if (callables.size() != 3 && callables.size() != 5 && !pair)
+      throw py::type_error(fmt::format(
+          "{}: the factory must return (sample, eval, pdf) or (sample, eval, pdf, "
+          "exterior_index, interior_index){}; it returned {}",
+          at, options.stochastic ? ", or (sample, eval)" : "", py::repr(bsdf).cast<std::string>()));
     chi2::BsdfModel model =
-        pythonBsdf(callables[0], callables[1], callables[2], Eigen::Vector3d::UnitZ(), at);
+        pythonBsdf(callables[0], callables[1], pair ? py::none() : py::object(callables[2]),
+                   Eigen::Vector3d::UnitZ(), at);
     if (callables.size() == 5) {
       model.exteriorIndex = callables[3].cast<double>();
       model.interiorIndex = callables[4].cast<double>();
@@ -121,13 +135,14 @@ void bindFamily(py::module_& m) {
               d["corner"] = c.corner;
               d["incidence"] = c.incidence;
               d["below"] = c.below;
-              d["result"] = py::cast(r.results[i]);
+              d["result"] =
+                  r.stochastic() ? py::cast(r.stochasticResults[i]) : py::cast(r.results[i]);
               out.append(d);
             }
             return out;
           },
           "each configuration in the family's order: name, values, corner, incidence (degrees), "
-          "below, and its Result")
+          "below, and its Result (a StochasticResult with stochastic=True)")
       .def_property_readonly("level", [](const chi2::FamilyResult& r) { return r.level; })
       .def_property_readonly("per_test_level",
                              [](const chi2::FamilyResult& r) { return r.perTestLevel; })
@@ -152,7 +167,9 @@ parameters' ranges and a stratified set of points inside it, each at every incid
 Keywords: alpha (required: the family-wise level, split by Sidak over every test),
 incidences (degrees, default [0, 30, 60, 85, 89.9, 90]), from_below (False),
 interior_points (8), seed (of the interior points), detect (default (0.02, 0.25)) or samples,
-and check_bsdf's other keywords but name and wi, for every configuration.
+and check_bsdf's other keywords but name and wi, for every configuration. With stochastic=True
+each configuration gets check_stochastic_bsdf's mean-weight check instead (its keywords
+samples, resolution, power and strata), and the factory may return (sample, eval).
 Returns a FamilyResult.)");
 }
 

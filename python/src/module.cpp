@@ -13,6 +13,7 @@
 #include "family_binding.h"
 #include "python_bsdf.h"
 #include "python_warp.h"
+#include "stochastic_binding.h"
 
 namespace verity::python {
 
@@ -81,7 +82,8 @@ PYBIND11_MODULE(verity, m) {
   using namespace verity::python;
   m.doc() =
       "Verity's statistical checks of BSDFs and warps written in NumPy (docs/python.md): "
-      "check_bsdf, check_bsdf_family, check_warp; and compare, for two sets of renders as arrays "
+      "check_bsdf, check_bsdf_family, check_stochastic_bsdf, check_warp; and compare, for two sets "
+      "of renders as arrays "
       "or EXR files.";
   // The library's argument errors are the caller's: ValueError.
   py::register_exception_translator([](std::exception_ptr p) {
@@ -94,6 +96,7 @@ PYBIND11_MODULE(verity, m) {
   bindCheckResult(m);
   bindCompare(m);
   bindFamily(m);
+  bindStochastic(m);
   // What a pdf callable is given per call by the quadrature: at least this many points but
   // for a computation's last refinement levels, at most 2^18.
   m.attr("DENSITY_BATCH_POINTS") = verity::chi2::kDensityBatchPoints;
