@@ -48,6 +48,23 @@ void requireKnown(const py::kwargs& kw, const std::string& check,
   }
 }
 
+std::string checkName(const char* function, const py::kwargs& kw) {
+  return kw.contains("name") && !kw["name"].is_none()
+             ? fmt::format("{} '{}'", function, kw["name"].cast<std::string>())
+             : function;
+}
+
+Eigen::Vector3d readWi(const py::kwargs& kw, const std::string& check) {
+  if (!kw.contains("wi"))
+    throw py::type_error(check +
+                         ": the keyword argument wi (the incident direction, (x, y, z) in "
+                         "the local frame, normal +z) is required");
+  const auto values = kw["wi"].cast<std::vector<double>>();
+  if (values.size() != 3 || !(Eigen::Vector3d(values.data()).norm() > 0))
+    throw py::value_error(check + ": wi must be a non-zero direction of 3 numbers");
+  return Eigen::Vector3d(values.data());
+}
+
 void readCheckOptions(const py::kwargs& kw, const std::string& check, chi2::CheckOptions& o) {
   read(kw, "name", o.name);
   if (!read(kw, "alpha", o.significance))

@@ -24,6 +24,12 @@ void readBsdfOptions(const py::kwargs& kw, const std::string& check, chi2::BsdfC
 void readStochasticOptions(const py::kwargs& kw, const std::string& check,
                            chi2::StochasticCheckOptions& o);
 
+// "check_bsdf 'NAME'" for the keyword name, else the function's name: how messages name a check.
+std::string checkName(const char* function, const py::kwargs& kw);
+
+// The required keyword wi, a non-zero direction of 3 numbers (TypeError or ValueError naming it).
+Eigen::Vector3d readWi(const py::kwargs& kw, const std::string& check);
+
 // TypeError naming any keyword in kw that is not in `known`.
 void requireKnown(const py::kwargs& kw, const std::string& check,
                   const std::vector<std::string>& known);

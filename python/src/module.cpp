@@ -19,12 +19,6 @@ namespace verity::python {
 
 namespace {
 
-std::string checkName(const char* function, const py::kwargs& kw) {
-  return kw.contains("name") && !kw["name"].is_none()
-             ? fmt::format("{} '{}'", function, kw["name"].cast<std::string>())
-             : function;
-}
-
 // Runs the check with the GIL released: only the callables' batches take it.
 template <class Check>
 chi2::CheckResult released(const Check& check) {
@@ -39,14 +33,7 @@ chi2::CheckResult checkBsdf(py::object sample, py::object eval, py::object pdf,
   known.insert(known.end(), kBsdfKeywords.begin(), kBsdfKeywords.end());
   known.insert(known.end(), {"wi", "exterior_index", "interior_index"});
   requireKnown(kw, check, known);
-  if (!kw.contains("wi"))
-    throw py::type_error(check +
-                         ": the keyword argument wi (the incident direction, (x, y, z) in "
-                         "the local frame, normal +z) is required");
-  const auto wiValues = kw["wi"].cast<std::vector<double>>();
-  if (wiValues.size() != 3 || !(Eigen::Vector3d(wiValues.data()).norm() > 0))
-    throw py::value_error(check + ": wi must be a non-zero direction of 3 numbers");
-  const Eigen::Vector3d wi(wiValues.data());
+  const Eigen::Vector3d wi = readWi(kw, check);
   chi2::BsdfCheckOptions options;
   readBsdfOptions(kw, check, options);
   chi2::BsdfModel model = pythonBsdf(sample, eval, pdf, wi, check);

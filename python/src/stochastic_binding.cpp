@@ -1,6 +1,5 @@
 #include "stochastic_binding.h"
 
-#include <fmt/format.h>
 #include <pybind11/stl.h>
 
 #include "check_options.h"
@@ -12,21 +11,11 @@ namespace {
 
 chi2::StochasticCheck checkStochasticBsdf(py::object sample, py::object eval,
                                           const py::kwargs& kw) {
-  const std::string check =
-      kw.contains("name") && !kw["name"].is_none()
-          ? fmt::format("check_stochastic_bsdf '{}'", kw["name"].cast<std::string>())
-          : std::string("check_stochastic_bsdf");
+  const std::string check = checkName("check_stochastic_bsdf", kw);
   std::vector<std::string> known = kStochasticKeywords;
   known.push_back("wi");
   requireKnown(kw, check, known);
-  if (!kw.contains("wi"))
-    throw py::type_error(check +
-                         ": the keyword argument wi (the incident direction, (x, y, z) in "
-                         "the local frame, normal +z) is required");
-  const auto wiValues = kw["wi"].cast<std::vector<double>>();
-  if (wiValues.size() != 3 || !(Eigen::Vector3d(wiValues.data()).norm() > 0))
-    throw py::value_error(check + ": wi must be a non-zero direction of 3 numbers");
-  const Eigen::Vector3d wi(wiValues.data());
+  const Eigen::Vector3d wi = readWi(kw, check);
   chi2::StochasticCheckOptions options;
   readStochasticOptions(kw, check, options);
   // The mean-weight check asks nothing of a pdf.
