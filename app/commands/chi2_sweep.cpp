@@ -15,7 +15,6 @@
 #include "cli/output_paths.h"
 #include "commands/check_progress_display.h"
 #include "core/error.h"
-#include "validation/referee/junit_report.h"
 
 namespace verity {
 
@@ -123,7 +122,7 @@ chi2::Verdict runChi2Sweep(const std::string& materialJson, const std::vector<Sw
               r.markdown() +
                   (figures.empty() ? "" : "\nFigures of those that did not pass:\n\n" + figures));
     writeText(outputPrefix + ".json", r.json());
-    validation::writeJunit(outputPrefix + ".xml", r.junit("verity chi2 " + materialJson));
+    writeText(outputPrefix + ".xml", r.junit("verity chi2 " + materialJson));
     std::cout << fmt::format("  wrote {0}.md, {0}.json and {0}.xml (JUnit)\n", outputPrefix);
     for (size_t k : drawn)
       std::cout << fmt::format(
