@@ -47,6 +47,7 @@ struct BenchArgs {
   // Russian roulette depths compared with --reference, each with every integrator; empty: the
   // scene's (or the default).
   std::vector<int> rrDepths;
+  std::vector<float> rrThresholds;  // likewise, each with every depth
   // Samplers (registry names) compared with --reference, each with every integrator; empty: the
   // scene's.
   std::vector<std::string> samplers;
@@ -190,8 +191,8 @@ int runEfficiency(const SceneFile& file, const BenchArgs& args) {
                                   reference.width, reference.height, resolution.x(), resolution.y(),
                                   reference.width));
   struct Measured {
-    // The integrator, its roulette depth when --rr-depth compares some and its sampler when
-    // --sampler does.
+    // The integrator, its roulette depth and threshold when --rr-depth and --rr-threshold
+    // compare some, and its sampler when --sampler does.
     std::string label;
     IntegratorSettings settings;
     std::unique_ptr<Integrator> integrator;
@@ -206,19 +207,26 @@ int runEfficiency(const SceneFile& file, const BenchArgs& args) {
     const IntegratorSettings settings = studies::studyIntegrator(file, name, args.maxBounces);
     const std::vector<int> depths =
         args.rrDepths.empty() ? std::vector<int>{settings.rrDepth} : args.rrDepths;
+    const std::vector<float> thresholds =
+        args.rrThresholds.empty() ? std::vector<float>{makeRoulette(settings).threshold()}
+                                  : args.rrThresholds;
     for (const int depth : depths)
-      for (const studies::StudySampler& sampler : samplers) {
-        Measured m;
-        IntegratorOverrides roulette;  // --rr-depth, checked against the integrator
-        roulette.rrDepth = args.rrDepths.empty() ? 0 : depth;
-        m.settings = overrideIntegrator(settings, roulette);
-        m.label = name;
-        if (!args.rrDepths.empty()) m.label += fmt::format(" rr_depth {}", depth);
-        if (!args.samplers.empty()) m.label += " " + sampler.type;
-        m.integrator = makeIntegrator(m.settings);
-        m.sampler = &sampler;
-        measured.push_back(std::move(m));
-      }
+      for (const float threshold : thresholds)
+        for (const studies::StudySampler& sampler : samplers) {
+          Measured m;
+          // --rr-depth and --rr-threshold, checked against the integrator
+          IntegratorOverrides roulette;
+          roulette.rrDepth = args.rrDepths.empty() ? 0 : depth;
+          roulette.rrThreshold = args.rrThresholds.empty() ? 0 : threshold;
+          m.settings = overrideIntegrator(settings, roulette);
+          m.label = name;
+          if (!args.rrDepths.empty()) m.label += fmt::format(" rr_depth {}", depth);
+          if (!args.rrThresholds.empty()) m.label += fmt::format(" rr_threshold {}", threshold);
+          if (!args.samplers.empty()) m.label += " " + sampler.type;
+          m.integrator = makeIntegrator(m.settings);
+          m.sampler = &sampler;
+          measured.push_back(std::move(m));
+        }
   }
   const double referenceRelMse = studies::referenceRelMse(reference);
   std::string samplerNames;
@@ -280,6 +288,8 @@ int run(const BenchArgs& args) {
     throw VerityError("", "--reference", "--reference and --bdpt are separate measurements");
   if (!args.rrDepths.empty() && args.reference.empty())
     throw VerityError("", "--rr-depth", "compares efficiencies, so it needs --reference");
+  if (!args.rrThresholds.empty() && args.reference.empty())
+    throw VerityError("", "--rr-threshold", "compares efficiencies, so it needs --reference");
   if (!args.samplers.empty() && args.reference.empty())
     throw VerityError("", "--sampler", "compares efficiencies, so it needs --reference");
   if (!args.reference.empty()) return runEfficiency(file, args);
@@ -351,6 +361,13 @@ void addBenchCommand(CLI::App& app, const ProcessGroup& group) {
       ->default_str("the scene's")
       ->delimiter(',')
       ->check(wholeNumber(1));
+  cmd->add_option("--rr-threshold", args->rrThresholds,
+                  "Russian roulette thresholds compared with --reference, comma-separated, each "
+                  "with every --rr-depth: the throughput below which roulette may end a path "
+                  "(the integrator's \"rr_threshold\")")
+      ->default_str("the scene's")
+      ->delimiter(',')
+      ->check(realNumber(0, false, 1, true));
   cmd->add_option("--sampler", args->samplers,
                   "Samplers compared with --reference, comma-separated, each with every "
                   "integrator, alternating, with seeds of their own (a sampler other than the "

@@ -9,6 +9,7 @@
 #include "cli/max_bounces_option.h"
 #include "cli/number_options.h"
 #include "cli/output_paths.h"
+#include "cli/roulette_options.h"
 #include "cli/seed_option.h"
 #include "cli/subcommand.h"
 #include "cli/threads_option.h"
@@ -36,7 +37,8 @@ struct RenderArgs {
   std::string integrator;
   std::string sampler;  // a registry type with its keys at their defaults; empty: the scene's
   int maxBounces = -1;
-  int rrDepth = 0;  // 0: the scene's
+  int rrDepth = 0;        // 0: the scene's
+  float rrThreshold = 0;  // 0: the scene's
   std::string output;
   bool variance = false;
   bool explain = false;
@@ -70,6 +72,7 @@ SceneOverrides sceneOverrides(const RenderArgs& args) {
     overrides.integrator.type = &integratorTypeNamed(args.integrator, "--integrator");
   overrides.integrator.maxBounces = args.maxBounces;
   overrides.integrator.rrDepth = args.rrDepth;
+  overrides.integrator.rrThreshold = args.rrThreshold;
   overrides.sampler = args.sampler;
   return overrides;
 }
@@ -255,11 +258,7 @@ void addRenderCommand(CLI::App& app, const ProcessGroup& group) {
                   "Sampler, its keys at their defaults: " + samplerTypeList())
       ->default_str("the scene's");
   addMaxBouncesOption(cmd, args->maxBounces);
-  cmd->add_option("--rr-depth", args->rrDepth,
-                  "Scattering event after which Russian roulette first decides whether a path "
-                  "goes on (the integrator's \"rr_depth\")")
-      ->default_str("the scene's")
-      ->check(wholeNumber(1));
+  addRouletteOptions(cmd, args->rrDepth, args->rrThreshold);
   CLI::Option* output =
       cmd->add_option("-o,--output", args->output,
                       "Output image file, .exr or .png; missing folders are created")

@@ -67,6 +67,9 @@ TEST_F(BadInput, EveryCommandExitsWithTwoAndNamesWhatItIsAbout) {
       {{"report", missing, "-o", dir_.string()}, missing},
       {{"bench", missing}, missing},
       {{"bench", scene_, "--rr-depth", "2"}, "--rr-depth: "},
+      {{"bench", scene_, "--rr-threshold", "0.5"}, "--rr-threshold: "},
+      {{"render", scene_, "--rr-threshold", "0", "-o", out}, "--rr-threshold: "},
+      {{"render", scene_, "--rr-threshold", "2", "-o", out}, "--rr-threshold: "},
       {{"error", missingExr, "--reference", missingExr}, missingExr},
       {{"compare", missingExr, missingExr}, missingExr},
       // Outputs are refused before the images are read (and so before any verdict is printed).

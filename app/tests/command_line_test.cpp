@@ -2,6 +2,7 @@
 // command's output (and the one rule for missing folders), one --integrator option, typed
 // numbers whose range errors are in words, defaults in --help, and status 2 for a command
 // line that cannot be parsed.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <regex>
 
 #include "film/image_io.h"
+#include "integrators/russian_roulette.h"
 #include "test_directory.h"
 #include "testing/child_process.h"
 
@@ -123,9 +125,11 @@ TEST_F(CommandLine, RenderWithAnotherSampler) {
   EXPECT_FALSE(std::filesystem::exists(dir_ / "y.exr"));
 }
 
-// --rr-depth overrides the integrator's "rr_depth": its default value gives the same image,
-// roulette from the first bounce another; an integrator without roulette refuses it.
-TEST_F(CommandLine, RouletteDepthOverride) {
+// --rr-depth and --rr-threshold override the integrator's "rr_depth" and "rr_threshold": their
+// default values give the same image, others another; an integrator without roulette refuses
+// them. The quad's paths make one bounce, of throughput 0.5: roulette decides there only at
+// depth 1, and ends half the paths at threshold 1 and none at 0.25.
+TEST_F(CommandLine, RouletteOverrides) {
   const auto render = [&](const std::vector<std::string>& extra, const std::string& name) {
     std::vector<std::string> args = {"render", scene_, "--spp", "4",
                                      "--seed", "7",    "-o",    (dir_ / name).string()};
@@ -133,16 +137,30 @@ TEST_F(CommandLine, RouletteDepthOverride) {
     return verity(args);
   };
   ASSERT_EQ(render({}, "scene.exr").status, 0);
-  ASSERT_EQ(render({"--rr-depth", "3"}, "three.exr").status, 0);
-  ASSERT_EQ(render({"--rr-depth", "1"}, "one.exr").status, 0);
-  EXPECT_EQ(readExr(dir_ / "scene.exr").planes, readExr(dir_ / "three.exr").planes);
-  EXPECT_NE(readExr(dir_ / "scene.exr").planes, readExr(dir_ / "one.exr").planes);
+  const std::string depth = std::to_string(kDefaultRouletteDepth);
+  // The scene names no integrator: it gets path_tracer_mats.
+  const std::string threshold = fmt::format("{}", kPathTracerRouletteThreshold);
+  ASSERT_EQ(render({"--rr-depth", depth, "--rr-threshold", threshold}, "default.exr").status, 0);
+  ASSERT_EQ(render({"--rr-depth", "1", "--rr-threshold", "1"}, "one.exr").status, 0);
+  ASSERT_EQ(render({"--rr-depth", "2", "--rr-threshold", "1"}, "two.exr").status, 0);
+  ASSERT_EQ(render({"--rr-depth", "1", "--rr-threshold", "0.25"}, "quarter.exr").status, 0);
+  const auto planes = [&](const char* name) { return readExr(dir_ / name).planes; };
+  EXPECT_EQ(planes("scene.exr"), planes("default.exr"));
+  EXPECT_NE(planes("one.exr"), planes("two.exr"));
+  EXPECT_NE(planes("one.exr"), planes("quarter.exr"));
   const testing::Outcome refused = render({"--integrator", "normals", "--rr-depth", "2"}, "n.exr");
   EXPECT_EQ(refused.status, 2);
   EXPECT_NE(refused.stderrText.find("--rr-depth: the integrator \"normals\" has no Russian "
                                     "roulette"),
             std::string::npos)
       << refused.stderrText;
+  const testing::Outcome refusedThreshold =
+      render({"--integrator", "normals", "--rr-threshold", "0.5"}, "n.exr");
+  EXPECT_EQ(refusedThreshold.status, 2);
+  EXPECT_NE(refusedThreshold.stderrText.find("--rr-threshold: the integrator \"normals\" has "
+                                             "no Russian roulette"),
+            std::string::npos)
+      << refusedThreshold.stderrText;
 }
 
 // -o names every command's output: a file (render, compare), a folder (reference), a prefix

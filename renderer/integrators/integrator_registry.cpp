@@ -17,7 +17,7 @@ template <PathTracer::Strategy strategy>
 std::unique_ptr<Integrator> makePathTracer(const IntegratorSettings& s) {
   return std::make_unique<PathTracer>(strategy, s.maxBounces,
                                       strategy == PathTracer::Strategy::Mis ? s.misPower : 1,
-                                      RussianRoulette(s.rrDepth));
+                                      makeRoulette(s));
 }
 
 // "power" as the type lists it: what its heuristic weights.
@@ -49,8 +49,9 @@ std::vector<IntegratorType> makeTable() {
                .strategies = "emission found by material sampling alone: rays that hit an "
                              "emitter or escape to the background; no shadow rays",
                .estimatesRadiance = true,
-               .keys = declarations(kMaxBounces, kRrDepth),
+               .keys = declarations(kMaxBounces),
                .hasRussianRoulette = true,
+               .rouletteThreshold = kPathTracerRouletteThreshold,
                .make = makePathTracer<PathTracer::Strategy::Materials>});
   t.push_back({.name = "path_tracer_nee",
                .description = "path tracing with next-event estimation",
@@ -59,19 +60,20 @@ std::vector<IntegratorType> makeTable() {
                              "emission hit by material sampling only when seen directly or "
                              "after a delta bounce",
                .estimatesRadiance = true,
-               .keys = declarations(kMaxBounces, kRrDepth),
+               .keys = declarations(kMaxBounces),
                .hasRussianRoulette = true,
+               .rouletteThreshold = kPathTracerRouletteThreshold,
                .make = makePathTracer<PathTracer::Strategy::NextEvent>});
-  t.push_back(
-      {.name = "path_tracer_mis",
-       .description = "path tracing, material and light samples combined by MIS",
-       .strategies = "material sampling and next-event estimation at non-delta "
-                     "surfaces, combined by multiple importance sampling (balance "
-                     "heuristic, or power heuristic with \"power\")",
-       .estimatesRadiance = true,
-       .keys = declarations(kMaxBounces, kRrDepth, misPowerKey("material and light samples")),
-       .hasRussianRoulette = true,
-       .make = makePathTracer<PathTracer::Strategy::Mis>});
+  t.push_back({.name = "path_tracer_mis",
+               .description = "path tracing, material and light samples combined by MIS",
+               .strategies = "material sampling and next-event estimation at non-delta "
+                             "surfaces, combined by multiple importance sampling (balance "
+                             "heuristic, or power heuristic with \"power\")",
+               .estimatesRadiance = true,
+               .keys = declarations(kMaxBounces, misPowerKey("material and light samples")),
+               .hasRussianRoulette = true,
+               .rouletteThreshold = kPathTracerRouletteThreshold,
+               .make = makePathTracer<PathTracer::Strategy::Mis>});
   t.push_back({.name = "bdpt",
                .description = "bidirectional path tracing, MIS over every strategy (s, t)",
                .strategies = "every connection (s, t) of a light subpath of s vertices and a "
@@ -79,11 +81,12 @@ std::vector<IntegratorType> makeTable() {
                              "sampling; light subpaths connected to the lens (t = 1) are "
                              "splatted",
                .estimatesRadiance = true,
-               .keys = declarations(kMaxBounces, kRrDepth, misPowerKey("the strategies (s, t)")),
+               .keys = declarations(kMaxBounces, misPowerKey("the strategies (s, t)")),
                .hasRussianRoulette = true,
+               .rouletteThreshold = kBdptRouletteThreshold,
                .hasStrategies = true,
                .make = [](const IntegratorSettings& s) -> std::unique_ptr<Integrator> {
-                 return std::make_unique<Bdpt>(s.maxBounces, s.misPower, RussianRoulette(s.rrDepth),
+                 return std::make_unique<Bdpt>(s.maxBounces, s.misPower, makeRoulette(s),
                                                s.bdptDroppedStrategy);
                }});
   t.push_back({.name = "light_tracer",
@@ -93,13 +96,23 @@ std::vector<IntegratorType> makeTable() {
                              "seen directly; nothing the camera sees only in a mirror or through "
                              "smooth glass",
                .estimatesRadiance = true,
-               .keys = declarations(kMaxBounces, kRrDepth),
+               .keys = declarations(kMaxBounces),
                .hasRussianRoulette = true,
+               .rouletteThreshold = kLightTracerRouletteThreshold,
                .splatsOnly = true,
                .make = [](const IntegratorSettings& s) -> std::unique_ptr<Integrator> {
-                 return std::make_unique<LightTracer>(s.maxBounces, RussianRoulette(s.rrDepth));
+                 return std::make_unique<LightTracer>(s.maxBounces, makeRoulette(s));
                }});
-  for (IntegratorType& type : t) type.readsMaxBounces = declaresKey(type, "max_bounces");
+  for (IntegratorType& type : t) {
+    if (type.hasRussianRoulette) {
+      const KeyList roulette =
+          declarations(integrator_keys::kRrDepth,
+                       integrator_keys::kRrThreshold.withDefault(type.rouletteThreshold));
+      type.keys.insert(type.keys.begin() + (type.keys.empty() ? 0 : 1), roulette.begin(),
+                       roulette.end());
+    }
+    type.readsMaxBounces = declaresKey(type, "max_bounces");
+  }
   return t;
 }
 

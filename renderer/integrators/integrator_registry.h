@@ -36,6 +36,14 @@ inline const Key<int> kRrDepth{
         "the non-specular scattering event after which Russian roulette first decides "
         "whether a path goes on (1: after the first; specular events, at mirrors and "
         "smooth glass, are not counted); one more than max_bounces turns the roulette off"};
+// Each type with roulette lists it with its own default (IntegratorType::rouletteThreshold).
+inline const Key<float> kRrThreshold{
+    .name = "rr_threshold",
+    .allowed = {0, 1, true, false},
+    .meaning =
+        "the throughput below which Russian roulette may end a path: from rr_depth on, a path "
+        "whose throughput t (its largest channel, refraction's η² divided out) is below it "
+        "goes on with probability t / rr_threshold, at least 0.05"};
 inline const Key<float> kMisPower{
     .name = "power",
     .defaultValue = kDefaultMisPower,
@@ -67,8 +75,11 @@ struct IntegratorType {
   KeyList keys;
   // Declares "max_bounces" (set from `keys`): it can split its image by path length.
   bool readsMaxBounces = false;
-  // Ends paths by Russian roulette and so reads "rr_depth" (--rr-depth applies).
+  // Ends paths by Russian roulette and so reads "rr_depth" and "rr_threshold" (--rr-depth and
+  // --rr-threshold apply); the table adds both keys to `keys`, after "max_bounces".
   bool hasRussianRoulette = false;
+  // Its "rr_threshold" when the scene gives none.
+  float rouletteThreshold = 1;
   bool hasStrategies = false;  // per-(s, t) strategy images (BDPT)
   // Sees only the pixels a light subpath reaches through the lens (t = 1 splats).
   bool splatsOnly = false;

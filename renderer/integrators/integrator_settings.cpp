@@ -26,11 +26,18 @@ IntegratorSettings overrideIntegrator(IntegratorSettings settings,
                                       const IntegratorOverrides& overrides) {
   if (overrides.type) settings.type = overrides.type;
   if (overrides.maxBounces >= 0) settings.maxBounces = overrides.maxBounces;
-  if (overrides.rrDepth > 0) {
+  const auto requireRoulette = [&](const char* option) {
     if (!settings.type->hasRussianRoulette)
-      throw VerityError("", "--rr-depth",
+      throw VerityError("", option,
                         "the integrator \"" + settings.type->name + "\" has no Russian roulette");
+  };
+  if (overrides.rrDepth > 0) {
+    requireRoulette("--rr-depth");
     settings.rrDepth = overrides.rrDepth;
+  }
+  if (overrides.rrThreshold > 0) {
+    requireRoulette("--rr-threshold");
+    settings.rrThreshold = overrides.rrThreshold;
   }
   return settings;
 }
@@ -46,10 +53,16 @@ IntegratorSettings parseIntegratorSettings(const JsonNode* node) {
   using namespace integrator_keys;
   if (declaresKey(type, kMaxBounces.name)) s.maxBounces = node->get(kMaxBounces);
   if (declaresKey(type, kRrDepth.name)) s.rrDepth = node->get(kRrDepth);
+  if (declaresKey(type, kRrThreshold.name) && node->find(kRrThreshold))
+    s.rrThreshold = node->get(kRrThreshold);
   if (declaresKey(type, kMisPower.name)) s.misPower = node->get(kMisPower);
   if (declaresKey(type, kAoDistance.name)) s.aoDistance = node->get(kAoDistance);
   node->rejectUnknownKeys();
   return s;
+}
+
+RussianRoulette makeRoulette(const IntegratorSettings& s) {
+  return RussianRoulette(s.rrDepth, s.rrThreshold.value_or(s.type->rouletteThreshold));
 }
 
 std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s) {

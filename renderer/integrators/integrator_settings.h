@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "integrators/bdpt.h"
@@ -30,6 +31,9 @@ struct IntegratorSettings {
   // "rr_depth": the scattering event after which Russian roulette first decides whether a path
   // goes on (1: after the first); one larger than max_bounces turns the roulette off.
   int rrDepth = kDefaultRouletteDepth;
+  // "rr_threshold": the throughput below which the roulette may end a path; unset, the type's
+  // own (IntegratorType::rouletteThreshold), whichever type the command line picks.
+  std::optional<float> rrThreshold;
   float aoDistance = kInfinity;  // occlusion radius for "ao"
   // Test hook, never read from a scene: a BDPT strategy whose contribution is left out.
   BdptStrategy bdptDroppedStrategy;
@@ -43,7 +47,8 @@ const IntegratorType& integratorTypeNamed(const std::string& name, const std::st
 struct IntegratorOverrides {
   const IntegratorType* type = nullptr;
   int maxBounces = -1;
-  int rrDepth = 0;  // an error (naming --rr-depth) for a type without Russian roulette
+  int rrDepth = 0;        // an error (naming --rr-depth) for a type without Russian roulette
+  float rrThreshold = 0;  // likewise (naming --rr-threshold)
 };
 // The overrides of `--integrator type` (empty: the scene's) and `--max-bounces` (negative:
 // the scene's).
@@ -53,5 +58,7 @@ IntegratorSettings overrideIntegrator(IntegratorSettings settings,
 // Reads the scene's "integrator" object (null: the defaults).
 IntegratorSettings parseIntegratorSettings(const JsonNode* node);
 std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& settings);
+// The Russian roulette the settings ask for.
+RussianRoulette makeRoulette(const IntegratorSettings& s);
 
 }  // namespace verity

@@ -18,6 +18,14 @@ class Sampler;
 // counting specular events (`verity bench
 // --rr-depth`).
 inline constexpr int kDefaultRouletteDepth = 3;
+// The throughput below which roulette may end a path unless the integrator's "rr_threshold"
+// says otherwise: a path of throughput t survives with probability t / threshold. The best
+// value depends on what it costs to go on: a path tracer's next vertex costs two rays, BDPT's
+// a connection to every vertex of the other subpath. reports/validation-findings.md records
+// the study behind each value (`verity bench --rr-threshold`).
+inline constexpr float kPathTracerRouletteThreshold = 0.5f;
+inline constexpr float kBdptRouletteThreshold = 1;
+inline constexpr float kLightTracerRouletteThreshold = 1;
 
 // What the roulette reads of a path besides its throughput, brought up to date after each
 // sampled scattering event by record().
@@ -43,26 +51,30 @@ class RussianRoulette {
  public:
   // Roulette decides once the path has made `depth` non-specular scattering events (1: from
   // the first on), after every later event, specular ones included.
-  explicit RussianRoulette(int depth = kDefaultRouletteDepth) : depth_(depth) {}
+  RussianRoulette(int depth, float threshold) : depth_(depth), threshold_(threshold) {}
 
   // Whether a path with `history` continues after its latest scattering event, given
   // `throughput`, the product of its scattering weights so far (divided by earlier survival
   // probabilities, and excluding what the path started with, such as emitted power, which says
   // nothing about how much a path has lost). The survival probability is
-  // throughput · etaScale, clamped; any function of the path may set it, so this stays
-  // unbiased; pbrt-v3's path tracer reads the same product. On survival `*survival` holds the
+  // throughput · etaScale / threshold, clamped to [kMinSurvival, 1]; any function of the path
+  // may set it, so this stays unbiased; pbrt-v3's path tracer reads the same product, and its
+  // "rrthreshold" the same threshold below which roulette may end a path (there it does not
+  // scale the probability). On survival `*survival` holds the
   // probability to divide the throughput by (exactly 1 before roulette starts). Draws one
   // sample from `sampler` only when roulette decides and the throughput is not zero.
   bool survives(const RouletteHistory& history, const Color3& throughput, Sampler& sampler,
                 float* survival) const;
 
   int depth() const { return depth_; }
+  float threshold() const { return threshold_; }
 
  private:
   // The smallest survival probability: a floor keeps the weight 1/q of a surviving path of
   // tiny throughput bounded.
   static constexpr float kMinSurvival = 0.05f;
   int depth_;
+  float threshold_;
 };
 
 }  // namespace verity

@@ -152,6 +152,13 @@ struct Key {
     return k;
   }
 
+  // This key as a type lists it, with its own default.
+  Key withDefault(T value) const {
+    Key k = *this;
+    k.defaultValue = value;
+    return k;
+  }
+
   std::vector<std::string> spellings() const {
     std::vector<std::string> all{name};
     all.insert(all.end(), aliases.begin(), aliases.end());

@@ -41,7 +41,7 @@ RouletteHistory afterEvents(int n) {
 }
 
 TEST(RussianRoulette, NoDecisionBeforeItsDepth) {
-  const RussianRoulette roulette(3);
+  const RussianRoulette roulette(3, 1.0f);
   FixedSampler sampler(0.999f);
   float survival = 0;
   for (int events : {0, 1, 2}) {
@@ -59,7 +59,7 @@ TEST(RussianRoulette, NoDecisionBeforeItsDepth) {
 // start nearer; a non-specular event does, and once started the roulette decides after specular
 // events too.
 TEST(RussianRoulette, SpecularEventsDoNotCountTowardsItsStart) {
-  const RussianRoulette roulette(1);
+  const RussianRoulette roulette(1, 1.0f);
   const Color3 throughput = Color3::Constant(1e-3f);
   FixedSampler sampler(0.999f);
   float survival = 0;
@@ -91,7 +91,7 @@ TEST(RussianRoulette, SpecularEventsDoNotCountTowardsItsStart) {
 // A depth beyond every bounce is no roulette: no path ends, no weight changes and no sample is
 // drawn, so the sample stream is the one of a walk without roulette.
 TEST(RussianRoulette, VeryLargeDepthIsNoRoulette) {
-  const RussianRoulette roulette(std::numeric_limits<int>::max());
+  const RussianRoulette roulette(std::numeric_limits<int>::max(), 1.0f);
   FixedSampler sampler(0.999f);
   float survival = 0;
   for (int events = 0; events < 100000; ++events) {
@@ -102,24 +102,29 @@ TEST(RussianRoulette, VeryLargeDepthIsNoRoulette) {
   EXPECT_EQ(sampler.draws, 0);
 }
 
-// The survival probability is the largest throughput component, at most 1 and at least 0.05;
-// a draw below it survives. A zero throughput ends without a draw.
+// The survival probability is the largest throughput component over the threshold, at most 1
+// and at least 0.05; a draw below it survives, and a path at or above the threshold survives
+// whatever it draws. A zero throughput ends without a draw.
 TEST(RussianRoulette, SurvivalProbability) {
-  const RussianRoulette roulette(1);
   struct Case {
+    float threshold;
     Color3 throughput;
     float survival;
   };
-  for (const Case& c : {Case{Color3(0.3f, 0.6f, 0.1f), 0.6f}, Case{Color3(2.0f, 0.1f, 0.1f), 1.0f},
-                        Case{Color3(0.01f, 0.02f, 0.0f), 0.05f}}) {
+  for (const Case& c :
+       {Case{1, Color3(0.3f, 0.6f, 0.1f), 0.6f}, Case{1, Color3(2.0f, 0.1f, 0.1f), 1.0f},
+        Case{1, Color3(0.01f, 0.02f, 0.0f), 0.05f}, Case{0.5f, Color3(0.3f, 0.1f, 0.2f), 0.6f},
+        Case{0.5f, Color3(0.1f, 0.5f, 0.1f), 1.0f},
+        Case{0.5f, Color3(0.01f, 0.02f, 0.0f), 0.05f}}) {
+    const RussianRoulette roulette(1, c.threshold);
     float survival = 0;
-    FixedSampler below(c.survival * 0.99f), above(c.survival);
+    FixedSampler below(c.survival * 0.99f), above(c.survival < 1 ? c.survival : 0.999f);
     EXPECT_TRUE(roulette.survives(afterEvents(1), c.throughput, below, &survival));
-    EXPECT_EQ(survival, c.survival);
-    if (c.survival < 1) {
-      EXPECT_FALSE(roulette.survives(afterEvents(1), c.throughput, above, &survival));
-    }
+    EXPECT_EQ(survival, c.survival) << c.threshold << ": " << c.throughput.transpose();
+    EXPECT_EQ(roulette.survives(afterEvents(1), c.throughput, above, &survival), c.survival == 1)
+        << c.threshold << ": " << c.throughput.transpose();
   }
+  const RussianRoulette roulette(1, 1.0f);
   FixedSampler sampler(0.0f);
   float survival = 0;
   EXPECT_FALSE(roulette.survives(afterEvents(1), Color3::Zero(), sampler, &survival));
@@ -131,7 +136,7 @@ TEST(RussianRoulette, SurvivalProbability) {
 // survives with probability 0.73², not 0.73² / 1.5² (it would then weigh 2.25 times too much
 // on survival: fireflies on the glass cross-check scene).
 TEST(RussianRoulette, RefractionIsNoLoss) {
-  const RussianRoulette roulette(0);
+  const RussianRoulette roulette(0, 1.0f);
   const float eta = 1.5f, albedo2 = 0.73f * 0.73f;
   const auto entering =
       sampleSmoothDielectric(Vector3f::UnitZ(), eta, 0.99f, TransportMode::Radiance);

@@ -69,6 +69,20 @@ TEST(SceneLoader, IntegratorSpellings) {
   EXPECT_EQ(loadSceneText(sceneWith(R"("integrator": {"type": "bdpt"})"), "/tmp/a.json")
                 .integrator.rrDepth,
             kDefaultRouletteDepth);
+  EXPECT_EQ(
+      loadSceneText(sceneWith(R"("integrator": {"type": "light_tracer", "rr_threshold": 0.25})"),
+                    "/tmp/a.json")
+          .integrator.rrThreshold,
+      0.25f);
+  // Unset, the threshold is the type's own, also when the command line changes the type.
+  const IntegratorSettings unset =
+      loadSceneText(sceneWith(R"("integrator": {"type": "path_tracer_mis"})"), "/tmp/a.json")
+          .integrator;
+  EXPECT_FALSE(unset.rrThreshold.has_value());
+  EXPECT_EQ(makeRoulette(unset).threshold(), kPathTracerRouletteThreshold);
+  IntegratorOverrides toBdpt;
+  toBdpt.type = &integratorTypeNamed("bdpt", "--integrator");
+  EXPECT_EQ(makeRoulette(overrideIntegrator(unset, toBdpt)).threshold(), kBdptRouletteThreshold);
   for (const char* type : {"normals", "ao", "path_tracer_mats", "path_tracer_nee"})
     EXPECT_EQ(loadSceneText(sceneWith(std::string(R"("integrator": {"type": ")") + type + "\"}"),
                             "/tmp/a.json")
@@ -263,6 +277,14 @@ INSTANTIATE_TEST_SUITE_P(
                   "integrator.rr_depth"},
         ErrorCase{R"("integrator": {"type": "ao", "rr_depth": 3})",
                   "integrator.rr_depth: unknown key"},
+        ErrorCase{R"("integrator": {"type": "path_tracer_nee", "rr_threshold": 0})",
+                  "integrator.rr_threshold: expected a number in (0, 1], found 0"},
+        ErrorCase{R"("integrator": {"type": "bdpt", "rr_threshold": 1.5})",
+                  "integrator.rr_threshold"},
+        ErrorCase{R"("integrator": {"type": "light_tracer", "rr_threshold": "half"})",
+                  "integrator.rr_threshold"},
+        ErrorCase{R"("integrator": {"type": "normals", "rr_threshold": 0.5})",
+                  "integrator.rr_threshold: unknown key"},
         ErrorCase{R"("sampler": {"type": "zsobol"})", "sampler.type"},
         ErrorCase{R"("image_samples": 0)", "image_samples"},
         ErrorCase{R"("background": {"type": "sky"})", "background.type"},
@@ -335,12 +357,14 @@ TEST(SceneLoader, OverridesApplyBeforeTheSceneIsBuilt) {
   SceneOverrides overrides = SceneOverrides::atWidth(20);
   overrides.integrator.type = &integratorTypeNamed("bdpt", "--integrator");
   overrides.integrator.rrDepth = 9;
+  overrides.integrator.rrThreshold = 0.125f;
   overrides.sampler = "sobol";
   const SceneFile f = loadSceneText(text, "/tmp/a.json", overrides);
   EXPECT_EQ(f.scene->camera().resolution(), Vector2i(20, 15));  // 8 × 6 widened, aspect kept
   EXPECT_EQ(f.integrator.type->name, "bdpt");
   EXPECT_EQ(f.integrator.maxBounces, 7);  // the file's, not overridden
   EXPECT_EQ(f.integrator.rrDepth, 9);
+  EXPECT_EQ(f.integrator.rrThreshold, 0.125f);
   EXPECT_FALSE(f.sampler->samplesAreIndependent());  // sobol in place of the independent one
   EXPECT_EQ(f.sampler->samplesPerPixel(), 5);
 
@@ -360,20 +384,24 @@ TEST(SceneLoader, OverridesApplyBeforeTheSceneIsBuilt) {
   roulette.integrator.type = &integratorTypeNamed("normals", "--integrator");
   roulette.integrator.rrDepth = 2;
   EXPECT_EQ(error(roulette).rfind("--rr-depth: ", 0), 0u) << error(roulette);
+  roulette.integrator.rrDepth = 0;
+  roulette.integrator.rrThreshold = 0.5f;
+  EXPECT_EQ(error(roulette).rfind("--rr-threshold: ", 0), 0u) << error(roulette);
   SceneOverrides sampler;
   sampler.sampler = "sobolev";
   EXPECT_EQ(error(sampler).rfind("--sampler: ", 0), 0u) << error(sampler);
 }
 
-// An integrator type says it has Russian roulette (--rr-depth applies) exactly when its scene
-// object takes "rr_depth".
-TEST(SceneLoader, RussianRouletteFlagMatchesTheKeyItReads) {
+// An integrator type says it has Russian roulette (--rr-depth and --rr-threshold apply) exactly
+// when its scene object takes "rr_depth" and "rr_threshold".
+TEST(SceneLoader, RussianRouletteFlagMatchesTheKeysItReads) {
   for (const IntegratorType& type : integratorTypes()) {
-    const std::string text =
-        sceneWith(R"("integrator": {"type": ")" + type.name + R"(", "rr_depth": 5})");
+    const std::string text = sceneWith(R"("integrator": {"type": ")" + type.name +
+                                       R"(", "rr_depth": 5, "rr_threshold": 0.75})");
     bool reads = true;
     try {
-      reads = loadSceneText(text, "/tmp/a.json").integrator.rrDepth == 5;
+      const IntegratorSettings s = loadSceneText(text, "/tmp/a.json").integrator;
+      reads = s.rrDepth == 5 && s.rrThreshold == 0.75f;
     } catch (const VerityError&) {
       reads = false;
     }
