@@ -34,8 +34,10 @@ SceneFile loadLightScene(const LightSetup& s) {
     }
   } removed{dir};
   SceneFile file = loadSceneText(text, dir / "light.json");
-  if (file.scene->lights().size() != 1)
+  if (s.sampling != LightSampling::Choice && file.scene->lights().size() != 1)
     throw std::invalid_argument(s.name + ": the surfaces must hold exactly one emitter");
+  if (s.sampling == LightSampling::Choice && file.scene->lights().size() < 2)
+    throw std::invalid_argument(s.name + ": a choice needs several emitters");
   return file;
 }
 
@@ -43,12 +45,17 @@ class LightSubject : public Subject {
  public:
   explicit LightSubject(const LightSetup& s)
       : setup_(s), file_(loadLightScene(s)), domain_(sphereDomain(s.resolution)) {
+    for (const Light* light : file_.scene->lights()) {
+      auto area = dynamic_cast<const AreaLight*>(light);
+      if (!area) throw std::invalid_argument(s.name + ": the emitters must be area lights");
+      collectEdges(area->shape());
+    }
     light_ = dynamic_cast<const AreaLight*>(file_.scene->lights().front());
-    if (!light_) throw std::invalid_argument(s.name + ": the emitter must be an area light");
     sphere_ = dynamic_cast<const Sphere*>(&light_->shape());
     if (s.sampling == LightSampling::SphereArea && !sphere_)
       throw std::invalid_argument(s.name + ": area sampling is tested on spheres");
-    collectEdges();
+    if (s.sampling == LightSampling::Choice && sphere_)
+      throw std::invalid_argument(s.name + ": a choice is tested among planar emitters");
   }
 
   // The light's outline seen from ref is where the density jumps; the inner quadrature
@@ -109,10 +116,13 @@ class LightSubject : public Subject {
       return double(sphere_->sampleArea(Point2f(0.5f, 0.5f)).pdf) * sphere_->radius() *
              sphere_->radius();
     SurfaceInteraction si;
-    if (!file_.scene->intersect(Ray(setup_.ref, d), si) || si.light != light_) return 0;
+    if (!file_.scene->intersect(Ray(setup_.ref, d), si) || !si.light) return 0;
     // Points whose front side faces away emit nothing: sampleLi declines them.
     if (!(si.ng.dot(-d) > 0)) return 0;
-    return light_->pdfLi(setup_.ref, si.p, si.ng);
+    if (setup_.sampling == LightSampling::Choice)
+      return double{file_.scene->lightPmf(setup_.ref, si.light)} *
+             si.light->pdfLi(setup_.ref, si.p, si.ng);
+    return si.light == light_ ? light_->pdfLi(setup_.ref, si.p, si.ng) : 0;
   }
 
   std::optional<Point2d> sample(pcg32& rng, Audit& audit) const override {
@@ -122,18 +132,29 @@ class LightSubject : public Subject {
       const ShapeSample s = sphere_->sampleArea(u);
       return checked((s.p - sphere_->center()).normalized(), s.pdf, audit);
     }
-    const auto ls = light_->sampleLi(setup_.ref, u);
+    const AreaLight* light = light_;
+    float pmf = 1;
+    if (setup_.sampling == LightSampling::Choice) {
+      light =
+          static_cast<const AreaLight*>(file_.scene->sampleLight(setup_.ref, uniform01(rng), &pmf));
+      if (!light) return std::nullopt;
+      const float reported = file_.scene->lightPmf(setup_.ref, light);
+      if (pmf != reported)
+        audit.record(Defect::SamplePdf,
+                     fmt::format("sampleLight pmf {} != lightPmf {}", pmf, reported));
+    }
+    const auto ls = light->sampleLi(setup_.ref, u);
     if (!ls) return std::nullopt;
     if (!ls->radiance.allFinite() || (ls->radiance.array() < 0).any())
       audit.record(Defect::NonFinite,
                    fmt::format("sampleLi radiance ({}, {}, {})", ls->radiance.x(), ls->radiance.y(),
                                ls->radiance.z()));
     // The returned density must be the one pdfLi() reports for the chosen point.
-    const float pdf = light_->pdfLi(setup_.ref, ls->p, ls->n);
+    const float pdf = light->pdfLi(setup_.ref, ls->p, ls->n);
     if (!relativelyClose(ls->pdf, pdf, kWeightTolerance))
       audit.record(Defect::SamplePdf, fmt::format("sampleLi pdf {} != pdfLi {} at p ({}, {}, {})",
                                                   ls->pdf, pdf, ls->p.x(), ls->p.y(), ls->p.z()));
-    return checked(ls->wi, ls->pdf, audit);
+    return checked(ls->wi, pmf * ls->pdf, audit);
   }
 
   // The outline's corners: an edge along a meridian is a jump in φ, a corner a kink.
@@ -148,7 +169,9 @@ class LightSubject : public Subject {
 
   std::string describe() const override {
     return fmt::format("light {} ({}) from ({}, {}, {}): {}", setup_.name,
-                       setup_.sampling == LightSampling::SphereArea ? "sphere area" : "solid angle",
+                       setup_.sampling == LightSampling::SphereArea ? "sphere area"
+                       : setup_.sampling == LightSampling::Choice   ? "choice of a light"
+                                                                    : "solid angle",
                        setup_.ref.x(), setup_.ref.y(), setup_.ref.z(), setup_.surfaces);
   }
 
@@ -174,12 +197,12 @@ class LightSubject : public Subject {
     return sphereCoords(d.cast<double>());
   }
 
-  void collectEdges() {
+  void collectEdges(const Shape& shape) {
     std::vector<std::vector<Point3f>> polygons;
-    if (auto quad = dynamic_cast<const Quad*>(&light_->shape())) {
+    if (auto quad = dynamic_cast<const Quad*>(&shape)) {
       const auto c = quad->corners();
       polygons.push_back({c.begin(), c.end()});
-    } else if (auto mesh = dynamic_cast<const TriangleMesh*>(&light_->shape())) {
+    } else if (auto mesh = dynamic_cast<const TriangleMesh*>(&shape)) {
       const MeshData& d = mesh->data();
       for (size_t i = 0; i + 2 < d.indices.size(); i += 3)
         polygons.push_back({d.positions[d.indices[i]], d.positions[d.indices[i + 1]],

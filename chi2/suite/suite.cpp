@@ -332,6 +332,19 @@ std::vector<LightCase> lightCases() {
   add("triangle_mesh", R"("type": "mesh", "filename": "mesh.obj")", LightSampling::SolidAngle,
       "v 1 0 0\nv 1 1 0\nv 1 0.2 0.3\nv 1.3 -0.8 -0.4\nv 1.1 -0.2 1.2\n"
       "f 1 3 2\nf 1 4 3\nf 3 5 2\n");
+  // Next-event estimation's choice among lights: a near quad (radiance 1, 1.5 along +x), a far
+  // larger and brighter one (radiance 3, 3 along −x), both facing the origin, and one below
+  // that faces away (radiance 5: never chosen, and its density 0).
+  const std::string quads =
+      R"([{"type": "quad", "size": 1, "material": {"type": "diffuse_light", "emit": 1},
+           "transform": [{"axis": [0, 1, 0], "angle": -90}, {"translate": [1.5, 0, 0]}]},
+          {"type": "quad", "size": 2, "material": {"type": "diffuse_light", "emit": 3},
+           "transform": [{"axis": [0, 1, 0], "angle": 90}, {"translate": [-3, 0, 0]}]},
+          {"type": "quad", "size": 1, "material": {"type": "diffuse_light", "emit": 5},
+           "transform": [{"axis": [1, 0, 0], "angle": 90}, {"translate": [0, -2, 0]}]}])";
+  v.push_back({"choice_quads",
+               {"choice_quads", quads, "", Point3f::Zero(), LightSampling::Choice,
+                kSweepSphereResolution}});
   return v;
 }
 

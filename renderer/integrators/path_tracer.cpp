@@ -24,7 +24,7 @@ float PathTracer::emissionWeight(bool countedByLightSampling, float bsdfPdf, flo
 Color3 PathTracer::sampleLight(const Scene& scene, Sampler& sampler, const SurfaceInteraction& si,
                                const Vector3f& wi, SampleContext& context) const {
   float pmf = 0;
-  const Light* light = scene.sampleLight(sampler.next1D(), &pmf);
+  const Light* light = scene.sampleLight(si.p, sampler.next1D(), &pmf);
   const Point2f u = sampler.next2D();
   if (!light || !(pmf > 0)) return Color3::Zero();
   const auto ls = light->sampleLi(si.p, u);
@@ -63,7 +63,8 @@ Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay
     ++context.stats.rays;
     if (!scene.intersect(ray, si)) {
       if (const EnvironmentLight* bg = scene.background()) {
-        const float lightPdf = lightSampledBefore ? scene.lightPmf(bg) * bg->pdfLi(ray.d) : 0;
+        const float lightPdf =
+            lightSampledBefore ? scene.lightPmf(previous, bg) * bg->pdfLi(ray.d) : 0;
         add(bounce,
             beta * bg->radiance(ray.d) * emissionWeight(lightSampledBefore, bsdfPdf, lightPdf));
       }
@@ -72,9 +73,9 @@ Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay
     if (si.light) {
       const Color3 Le = si.light->radiance(si.ng, -ray.d);
       if (!isBlack(Le)) {
-        const float lightPdf =
-            lightSampledBefore ? scene.lightPmf(si.light) * si.light->pdfLi(previous, si.p, si.ng)
-                               : 0;
+        const float lightPdf = lightSampledBefore ? scene.lightPmf(previous, si.light) *
+                                                        si.light->pdfLi(previous, si.p, si.ng)
+                                                  : 0;
         add(bounce, beta * Le * emissionWeight(lightSampledBefore, bsdfPdf, lightPdf));
       }
     }

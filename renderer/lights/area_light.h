@@ -28,6 +28,9 @@ class AreaLight : public Light {
   double power(double sceneRadius) const override {
     return double{luminance(radiance_)} * kPi * shape_.area();
   }
+  double contributionEstimate(const Point3f& ref) const override {
+    return double{luminance(radiance_)} * shape_.solidAngleEstimate(ref);
+  }
   const Shape& shape() const { return shape_; }
 
  private:

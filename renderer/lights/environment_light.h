@@ -31,6 +31,10 @@ class EnvironmentLight : public Light {
   void pdfLe(const Vector3f& towardsEnvironment, float sceneRadius, float* pdfPos,
              float* pdfDir) const;
   double power(double sceneRadius) const override;
+  // Its mean luminance over the hemisphere above a surface.
+  double contributionEstimate(const Point3f&) const override {
+    return double{luminance(average_)} * 2 * kPi;
+  }
   bool isInfinite() const override { return true; }
   bool isBlackEverywhere() const { return !image_ && isBlack(constant_); }
 

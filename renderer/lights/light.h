@@ -41,6 +41,10 @@ class Light {
   // bounding radius. In double precision: a bright or large emitter's power can exceed the
   // single-precision range even where its radiance does not.
   virtual double power(double sceneRadius) const = 0;
+  // An estimate of what the light sends to a point at `ref`: the luminance of its radiance
+  // times the solid angle it subtends there (Shape::solidAngleEstimate), for choosing a light
+  // for next-event estimation. 0 only where none of its light can arrive.
+  virtual double contributionEstimate(const Point3f& ref) const = 0;
   virtual bool isInfinite() const { return false; }
   // Samples an emitted ray: `uPos` chooses the origin, `uDir` the direction. The scene's
   // bounding sphere (center, radius) places the environment's emitting disk.

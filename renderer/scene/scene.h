@@ -52,9 +52,18 @@ class Scene {
   const EnvironmentLight* background() const { return background_.get(); }
 
   const std::vector<const Light*>& lights() const { return lights_; }
-  // Chooses a light with probability proportional to its power.
+  // Chooses a light with probability proportional to its power (light subpaths, and BDPT's
+  // connections, whose MIS weights read the same choice).
   const Light* sampleLight(float u, float* pmf) const;
   float lightPmf(const Light* light) const;
+  // Chooses a light for next-event estimation at `ref`, with probability proportional to its
+  // contributionEstimate() there: lights that face away get none, near and bright ones most.
+  // With one light, or more than kLightsChosenByContribution, by power. Null with *pmf 0 where
+  // no light can contribute.
+  const Light* sampleLight(const Point3f& ref, float u, float* pmf) const;
+  float lightPmf(const Point3f& ref, const Light* light) const;
+  // Every choice at a point weighs every light: beyond this many, power is cheaper.
+  static constexpr size_t kLightsChosenByContribution = 64;
 
   const SceneSummary& summary() const { return summary_; }
   const Bounds3f& bounds() const { return bounds_; }

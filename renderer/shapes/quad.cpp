@@ -18,6 +18,10 @@ Quad::Quad(const Transform& toWorld, const Vector2f& size) {
   pError_ = pointErrorBound(corner_.cwiseAbs() + edgeU_.cwiseAbs() + edgeV_.cwiseAbs());
 }
 
+double Quad::solidAngleEstimate(const Point3f& ref) const {
+  return planarSolidAngleEstimate(area_, corner_ + 0.5f * (edgeU_ + edgeV_), normal_, ref);
+}
+
 unsigned Quad::attach(RTCDevice device, RTCScene scene) const {
   RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);
   auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,

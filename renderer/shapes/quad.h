@@ -20,6 +20,7 @@ class Quad : public Shape {
   Bounds3f bounds() const override;
   float area() const override { return area_; }
   ShapeSample sampleArea(const Point2f& u) const override;
+  double solidAngleEstimate(const Point3f& ref) const override;
   size_t primitiveCount() const override { return 1; }
   // The corners in order around the boundary.
   std::array<Point3f, 4> corners() const {

@@ -1,5 +1,8 @@
 #include "shapes/shape.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace verity {
 
 float areaToSolidAngle(float pdfArea, const Point3f& ref, const Point3f& p, const Normal3f& n) {
@@ -21,6 +24,22 @@ std::optional<ShapeSample> Shape::sampleSolidAngle(const Point3f& ref, const Poi
 
 float Shape::pdfSolidAngle(const Point3f& ref, const Point3f& p, const Normal3f& n) const {
   return areaToSolidAngle(1.0f / area(), ref, p, n);
+}
+
+double planarSolidAngleEstimate(double area, const Point3f& centre, const Normal3f& n,
+                                const Point3f& ref) {
+  const Eigen::Vector3d d = (ref - centre).cast<double>();
+  const double dist2 = d.squaredNorm(), facing = n.cast<double>().dot(d);
+  if (!(facing > 0)) return 0;
+  return std::min(2 * double{kPi}, area * facing / (dist2 * std::sqrt(dist2)));
+}
+
+double Shape::solidAngleEstimate(const Point3f& ref) const {
+  const Bounds3f b = bounds();
+  if ((ref.array() >= b.lo.array()).all() && (ref.array() <= b.hi.array()).all())
+    return 2 * double{kPi};
+  const double dist2 = (0.5f * (b.lo + b.hi) - ref).cast<double>().squaredNorm();
+  return std::min(2 * double{kPi}, double{area()} / dist2);
 }
 
 }  // namespace verity

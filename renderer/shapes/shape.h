@@ -47,6 +47,10 @@ class Shape {
   // sample; shapes with a better strategy (spheres: the visible cone) override both.
   virtual std::optional<ShapeSample> sampleSolidAngle(const Point3f& ref, const Point2f& u) const;
   virtual float pdfSolidAngle(const Point3f& ref, const Point3f& p, const Normal3f& n) const;
+  // An estimate of the solid angle the shape's front side subtends at `ref`, at most 2π, for
+  // choosing among lights: 0 only where no point of the front side faces ref. The default
+  // takes the whole area at the distance of the bounds' centre (2π inside the bounds).
+  virtual double solidAngleEstimate(const Point3f& ref) const;
   // Number of primitives (for statistics).
   virtual size_t primitiveCount() const = 0;
 
@@ -71,6 +75,11 @@ inline Vector3f pointErrorBound(const Vector3f& magnitude) {
       kPointErrorRoundoffs * kUnitRoundoff / (1 - kPointErrorRoundoffs * kUnitRoundoff);
   return factor * magnitude;
 }
+
+// The solid angle a small planar emitter of `area` at `centre`, facing along `n`, subtends at
+// ref: area · cos / distance², at most 2π; 0 from behind it (it emits from its front only).
+double planarSolidAngleEstimate(double area, const Point3f& centre, const Normal3f& n,
+                                const Point3f& ref);
 
 // Converts an area density at p (normal n) to a solid-angle density at ref.
 float areaToSolidAngle(float pdfArea, const Point3f& ref, const Point3f& p, const Normal3f& n);

@@ -89,6 +89,14 @@ float Sphere::pdfSolidAngle(const Point3f& ref, const Point3f& p, const Normal3f
   return 1.0f / (2 * kPi * oneMinusCos);
 }
 
+double Sphere::solidAngleEstimate(const Point3f& ref) const {
+  const double dist2 = (center_ - ref).cast<double>().squaredNorm();
+  const double r2 = double{radius_} * radius_;
+  if (dist2 <= r2) return 2 * double{kPi};
+  const double sin2ThetaMax = r2 / dist2;
+  return 2 * double{kPi} * sin2ThetaMax / (1 + std::sqrt(1 - sin2ThetaMax));
+}
+
 namespace {
 
 const Key<float> kRadius{.name = "radius",

@@ -21,6 +21,8 @@ class Sphere : public Shape {
   ShapeSample sampleArea(const Point2f& u) const override;
   std::optional<ShapeSample> sampleSolidAngle(const Point3f& ref, const Point2f& u) const override;
   float pdfSolidAngle(const Point3f& ref, const Point3f& p, const Normal3f& n) const override;
+  // Exactly the visible cone's, 2π(1 − cos θmax); 2π from inside.
+  double solidAngleEstimate(const Point3f& ref) const override;
   size_t primitiveCount() const override { return 1; }
 
   const Point3f& center() const { return center_; }

@@ -80,6 +80,19 @@ Bounds3f TriangleMesh::bounds() const {
   return b;
 }
 
+double TriangleMesh::solidAngleEstimate(const Point3f& ref) const {
+  if (primitiveCount() > kTrianglesEstimated) return Shape::solidAngleEstimate(ref);
+  double sum = 0;
+  for (size_t tri = 0; tri < primitiveCount(); ++tri) {
+    const Point3f& a = data_.positions[data_.indices[3 * tri]];
+    const Point3f& b = data_.positions[data_.indices[3 * tri + 1]];
+    const Point3f& c = data_.positions[data_.indices[3 * tri + 2]];
+    const double area = areas_.pmf(tri) * areas_.total();
+    if (area > 0) sum += planarSolidAngleEstimate(area, (a + b + c) / 3, faceNormal(tri), ref);
+  }
+  return std::min(2 * double{kPi}, sum);
+}
+
 ShapeSample TriangleMesh::sampleArea(const Point2f& u) const {
   float remapped = 0;
   const size_t tri = areas_.sampleDiscrete(u.x(), nullptr, &remapped);

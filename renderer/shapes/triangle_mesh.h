@@ -27,7 +27,10 @@ class TriangleMesh : public Shape {
   Bounds3f bounds() const override;
   float area() const override { return static_cast<float>(areas_.total()); }
   ShapeSample sampleArea(const Point2f& u) const override;
+  // Summed over the triangles up to kTrianglesEstimated of them; beyond, the default's.
+  double solidAngleEstimate(const Point3f& ref) const override;
   size_t primitiveCount() const override { return data_.indices.size() / 3; }
+  static constexpr size_t kTrianglesEstimated = 16;
   const MeshData& data() const { return data_; }
 
  private:
