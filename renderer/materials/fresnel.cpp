@@ -71,11 +71,16 @@ Color3 fresnelSchlick(float cosThetaI, const Color3& f0) {
 }
 
 bool refract(const Vector3f& wi, const Vector3f& n, float eta, Vector3f& wt) {
-  const float cosThetaI = wi.dot(n);
-  const float sin2ThetaT = std::max(0.0f, 1.0f - cosThetaI * cosThetaI) / (eta * eta);
-  if (sin2ThetaT >= 1.0f) return false;
-  const float cosThetaT = safeSqrt(1.0f - sin2ThetaT);
-  wt = (-wi / eta + (cosThetaI / eta - cosThetaT) * n).normalized();
+  // In double precision: near grazing refraction 1 − sin²θt cancels, and in single precision
+  // cos θt took a few hundred values across a lobe of α = 1e-4 at η = 1.01 (85°): the sampled
+  // directions fell on a lattice coarse enough to shift each equal-probability cell's count by
+  // ±3% (a chi-square of 2,422 on 1,919 dof).
+  const Eigen::Vector3d i = wi.cast<double>(), m = n.cast<double>();
+  const double e = eta, cosThetaI = i.dot(m);
+  const double cos2ThetaT = 1.0 - std::max(0.0, 1.0 - cosThetaI * cosThetaI) / (e * e);
+  if (cos2ThetaT <= 0.0) return false;
+  const double cosThetaT = std::sqrt(cos2ThetaT);
+  wt = (-i / e + (cosThetaI / e - cosThetaT) * m).normalized().cast<float>();
   return true;
 }
 
