@@ -1,7 +1,7 @@
 #include "cli/max_bounces_option.h"
 
 #include "cli/number_options.h"
-#include "integrators/integrator_settings.h"
+#include "integrators/integrator_registry.h"
 
 namespace verity {
 
@@ -10,7 +10,7 @@ CLI::Option* addMaxBouncesOption(CLI::App* cmd, int& maxBounces) {
       ->add_option("--max-bounces", maxBounces,
                    "Maximum scattering events per path (0: emitters seen directly)")
       ->default_str("the scene's")
-      ->check(wholeNumber(0, kMaxBouncesLimit));
+      ->check(wholeNumber(integrator_keys::kMaxBounces.allowed));
 }
 
 }  // namespace verity

@@ -51,4 +51,12 @@ CLI::Validator realNumber(double lo, bool loIncluded, double hi, bool hiIncluded
       "");
 }
 
+CLI::Validator wholeNumber(const IntRange& allowed) {
+  return wholeNumber(allowed.lo, allowed.hi);
+}
+
+CLI::Validator realNumber(const Range& allowed) {
+  return realNumber(allowed.lo, !allowed.loOpen, allowed.hi, !allowed.hiOpen);
+}
+
 }  // namespace verity

@@ -8,6 +8,8 @@
 #include <climits>
 #include <cmath>
 
+#include "params/json_node.h"
+
 namespace verity {
 
 // A whole number from `min` to `max`.
@@ -17,5 +19,10 @@ CLI::Validator wholeNumber(long long min, long long max = INT_MAX);
 // `hiIncluded`); `hi` infinite: no upper bound.
 CLI::Validator realNumber(double lo, bool loIncluded, double hi = HUGE_VAL,
                           bool hiIncluded = false);
+
+// The values a key of the scene format allows, for the option that overrides it: one
+// statement of the range for both.
+CLI::Validator wholeNumber(const IntRange& allowed);
+CLI::Validator realNumber(const Range& allowed);
 
 }  // namespace verity

@@ -1,6 +1,7 @@
 #include "cli/roulette_options.h"
 
 #include "cli/number_options.h"
+#include "integrators/integrator_registry.h"
 
 namespace verity {
 
@@ -9,12 +10,12 @@ void addRouletteOptions(CLI::App* cmd, int& depth, float& threshold) {
                   "Scattering event after which Russian roulette first decides whether a path "
                   "goes on (the integrator's \"rr_depth\")")
       ->default_str("the scene's")
-      ->check(wholeNumber(1));
+      ->check(wholeNumber(integrator_keys::kRrDepth.allowed));
   cmd->add_option("--rr-threshold", threshold,
                   "Throughput below which Russian roulette may end a path (the integrator's "
                   "\"rr_threshold\")")
       ->default_str("the scene's")
-      ->check(realNumber(0, false, 1, true));
+      ->check(realNumber(integrator_keys::kRrThreshold.allowed));
 }
 
 }  // namespace verity

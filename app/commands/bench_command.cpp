@@ -360,14 +360,14 @@ void addBenchCommand(CLI::App& app, const ProcessGroup& group) {
                   "\"rr_depth\")")
       ->default_str("the scene's")
       ->delimiter(',')
-      ->check(wholeNumber(1));
+      ->check(wholeNumber(integrator_keys::kRrDepth.allowed));
   cmd->add_option("--rr-threshold", args->rrThresholds,
                   "Russian roulette thresholds compared with --reference, comma-separated, each "
                   "with every --rr-depth: the throughput below which roulette may end a path "
                   "(the integrator's \"rr_threshold\")")
       ->default_str("the scene's")
       ->delimiter(',')
-      ->check(realNumber(0, false, 1, true));
+      ->check(realNumber(integrator_keys::kRrThreshold.allowed));
   cmd->add_option("--sampler", args->samplers,
                   "Samplers compared with --reference, comma-separated, each with every "
                   "integrator, alternating, with seeds of their own (a sampler other than the "

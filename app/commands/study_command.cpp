@@ -7,6 +7,7 @@
 #include "cli/output_paths.h"
 #include "cli/subcommand.h"
 #include "cli/threads_option.h"
+#include "integrators/integrator_registry.h"
 #include "integrators/integrator_settings.h"
 #include "sampling/sampler_registry.h"
 #include "validation/studies/convergence.h"
@@ -157,7 +158,7 @@ void addStrategies(CLI::App& study, const ProcessGroup& group) {
   cmd->add_option("--runs", config->runs, "Independent runs per budget")->check(wholeNumber(1));
   cmd->add_option("--max-bounces", config->maxBounces,
                   "Maximum scattering events per path (0: emitters seen directly)")
-      ->check(wholeNumber(0, kMaxBouncesLimit));
+      ->check(wholeNumber(integrator_keys::kMaxBounces.allowed));
   cmd->add_option("--path-tracer", config->pathTracer,
                   "The path tracer whose path-length images are set beside the strategies");
   cmd->add_option("--resolution", config->resolution,

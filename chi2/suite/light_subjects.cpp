@@ -120,7 +120,7 @@ class LightSubject : public Subject {
     // Points whose front side faces away emit nothing: sampleLi declines them.
     if (!(si.ng.dot(-d) > 0)) return 0;
     if (setup_.sampling == LightSampling::Choice)
-      return double{file_.scene->lightPmf(setup_.ref, si.light)} *
+      return double{file_.scene->lightChoice(setup_.ref).pmf(si.light)} *
              si.light->pdfLi(setup_.ref, si.p, si.ng);
     return si.light == light_ ? light_->pdfLi(setup_.ref, si.p, si.ng) : 0;
   }
@@ -135,13 +135,13 @@ class LightSubject : public Subject {
     const AreaLight* light = light_;
     float pmf = 1;
     if (setup_.sampling == LightSampling::Choice) {
-      light =
-          static_cast<const AreaLight*>(file_.scene->sampleLight(setup_.ref, uniform01(rng), &pmf));
+      const LightChoice choice = file_.scene->lightChoice(setup_.ref);
+      light = static_cast<const AreaLight*>(choice.sample(uniform01(rng), &pmf));
       if (!light) return std::nullopt;
-      const float reported = file_.scene->lightPmf(setup_.ref, light);
+      const float reported = choice.pmf(light);
       if (pmf != reported)
         audit.record(Defect::SamplePdf,
-                     fmt::format("sampleLight pmf {} != lightPmf {}", pmf, reported));
+                     fmt::format("LightChoice::sample's pmf {} != pmf() {}", pmf, reported));
     }
     const auto ls = light->sampleLi(setup_.ref, u);
     if (!ls) return std::nullopt;

@@ -17,8 +17,8 @@ namespace verity::chi2 {
 enum class LightSampling {
   SolidAngle,  // AreaLight::sampleLi from `ref` (spheres: the visible cone; others: by area)
   SphereArea,  // Shape::sampleArea of a sphere, as directions from its centre
-  // Scene::sampleLight at `ref`, then that light's sampleLi; the density is the chosen
-  // light's lightPmf(ref) · pdfLi. Planar emitters (quads, triangles) that do not overlap
+  // Scene::lightChoice(ref)'s sample, then that light's sampleLi; the density is the chosen
+  // light's pmf() there · pdfLi. Planar emitters (quads, triangles) that do not overlap
   // as seen from ref.
   Choice,
 };

@@ -21,10 +21,11 @@ float PathTracer::emissionWeight(bool countedByLightSampling, float bsdfPdf, flo
   return 1;
 }
 
-Color3 PathTracer::sampleLight(const Scene& scene, Sampler& sampler, const SurfaceInteraction& si,
-                               const Vector3f& wi, SampleContext& context) const {
+Color3 PathTracer::sampleLight(const Scene& scene, const LightChoice& choice, Sampler& sampler,
+                               const SurfaceInteraction& si, const Vector3f& wi,
+                               SampleContext& context) const {
   float pmf = 0;
-  const Light* light = scene.sampleLight(si.p, sampler.next1D(), &pmf);
+  const Light* light = choice.sample(sampler.next1D(), &pmf);
   const Point2f u = sampler.next2D();
   if (!light || !(pmf > 0)) return Color3::Zero();
   const auto ls = light->sampleLi(si.p, u);
@@ -51,6 +52,8 @@ Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay
   bool lightSampledBefore = false;
   float bsdfPdf = 0;
   Point3f previous = ray.o;
+  // The light choice at the previous vertex, which the MIS weight of a light hit reads.
+  LightChoice choice;
   const bool samplesLights = strategy_ != Strategy::Materials;
   // Adds the contribution of paths with `bounces` bounces.
   const auto add = [&](int bounces, const Color3& c) {
@@ -63,8 +66,7 @@ Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay
     ++context.stats.rays;
     if (!scene.intersect(ray, si)) {
       if (const EnvironmentLight* bg = scene.background()) {
-        const float lightPdf =
-            lightSampledBefore ? scene.lightPmf(previous, bg) * bg->pdfLi(ray.d) : 0;
+        const float lightPdf = lightSampledBefore ? choice.pmf(bg) * bg->pdfLi(ray.d) : 0;
         add(bounce,
             beta * bg->radiance(ray.d) * emissionWeight(lightSampledBefore, bsdfPdf, lightPdf));
       }
@@ -73,9 +75,8 @@ Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay
     if (si.light) {
       const Color3 Le = si.light->radiance(si.ng, -ray.d);
       if (!isBlack(Le)) {
-        const float lightPdf = lightSampledBefore ? scene.lightPmf(previous, si.light) *
-                                                        si.light->pdfLi(previous, si.p, si.ng)
-                                                  : 0;
+        const float lightPdf =
+            lightSampledBefore ? choice.pmf(si.light) * si.light->pdfLi(previous, si.p, si.ng) : 0;
         add(bounce, beta * Le * emissionWeight(lightSampledBefore, bsdfPdf, lightPdf));
       }
     }
@@ -83,7 +84,10 @@ Color3 PathTracer::Li(const Scene& scene, Sampler& sampler, const Ray& cameraRay
 
     const Vector3f wi = si.toLocal(-ray.d);
     const bool canSampleLights = samplesLights && si.material->hasNonDeltaLobe();
-    if (canSampleLights) add(bounce + 1, beta * sampleLight(scene, sampler, si, wi, context));
+    if (canSampleLights) {
+      choice = scene.lightChoice(si.p);
+      add(bounce + 1, beta * sampleLight(scene, choice, sampler, si, wi, context));
+    }
 
     const float uLobe = sampler.next1D();
     const auto bs = si.material->sample(si.textureQuery(), wi, uLobe, sampler.next2D(),

@@ -26,8 +26,10 @@ class PathTracer : public Integrator {
   // Weight of emission found by material sampling with density `bsdfPdf` when light
   // sampling had density `lightPdf` for the same point.
   float emissionWeight(bool countedByLightSampling, float bsdfPdf, float lightPdf) const;
-  Color3 sampleLight(const Scene& scene, Sampler& sampler, const SurfaceInteraction& si,
-                     const Vector3f& wi, SampleContext& context) const;
+  // Next-event estimation at si with a light drawn from `choice`, made at si.p.
+  Color3 sampleLight(const Scene& scene, const LightChoice& choice, Sampler& sampler,
+                     const SurfaceInteraction& si, const Vector3f& wi,
+                     SampleContext& context) const;
 
   Strategy strategy_;
   int maxBounces_;

@@ -2,8 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <array>
-
 #include "core/error.h"
 #include "materials/diffuse_light.h"
 
@@ -161,45 +159,10 @@ const Light* Scene::sampleLight(float u, float* pmf) const {
   return lights_[lightDistribution_.sampleDiscrete(u, pmf)];
 }
 
-namespace {
-
-// The lights' contribution estimates at ref, and their sum.
-struct ContributionWeights {
-  std::array<double, Scene::kLightsChosenByContribution> weight;
-  double total = 0;
-  ContributionWeights(const std::vector<const Light*>& lights, const Point3f& ref) {
-    for (size_t i = 0; i < lights.size(); ++i)
-      total += weight[i] = lights[i]->contributionEstimate(ref);
-  }
-};
-
-}  // namespace
-
-const Light* Scene::sampleLight(const Point3f& ref, float u, float* pmf) const {
-  if (lights_.size() <= 1 || lights_.size() > kLightsChosenByContribution)
-    return sampleLight(u, pmf);
-  const ContributionWeights w(lights_, ref);
-  *pmf = 0;
-  if (!(w.total > 0)) return nullptr;
-  const double target = double{u} * w.total;
-  double below = 0;
-  size_t chosen = 0;
-  // The last light of positive weight catches a target that rounding put past the sum.
-  for (size_t i = 0; i < lights_.size(); ++i) {
-    if (!(w.weight[i] > 0)) continue;
-    chosen = i;
-    if (target < below + w.weight[i]) break;
-    below += w.weight[i];
-  }
-  *pmf = static_cast<float>(w.weight[chosen] / w.total);
-  return lights_[chosen];
-}
-
-float Scene::lightPmf(const Point3f& ref, const Light* light) const {
-  if (lights_.size() <= 1 || lights_.size() > kLightsChosenByContribution) return lightPmf(light);
-  if (!light) return 0;
-  const ContributionWeights w(lights_, ref);
-  return w.total > 0 ? static_cast<float>(w.weight[light->index] / w.total) : 0;
+LightChoice Scene::lightChoice(const Point3f& ref) const {
+  if (lights_.size() <= 1 || lights_.size() > LightChoice::kMaxLightsByContribution)
+    return LightChoice(lights_, lightDistribution_);
+  return LightChoice(lights_, ref);
 }
 
 float Scene::lightPmf(const Light* light) const {

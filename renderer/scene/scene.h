@@ -13,6 +13,7 @@
 #include "lights/environment_light.h"
 #include "materials/material.h"
 #include "sampling/distribution.h"
+#include "scene/light_choice.h"
 #include "scene/ray_log.h"
 #include "shapes/shape.h"
 
@@ -56,14 +57,8 @@ class Scene {
   // connections, whose MIS weights read the same choice).
   const Light* sampleLight(float u, float* pmf) const;
   float lightPmf(const Light* light) const;
-  // Chooses a light for next-event estimation at `ref`, with probability proportional to its
-  // contributionEstimate() there: lights that face away get none, near and bright ones most.
-  // With one light, or more than kLightsChosenByContribution, by power. Null with *pmf 0 where
-  // no light can contribute.
-  const Light* sampleLight(const Point3f& ref, float u, float* pmf) const;
-  float lightPmf(const Point3f& ref, const Light* light) const;
-  // Every choice at a point weighs every light: beyond this many, power is cheaper.
-  static constexpr size_t kLightsChosenByContribution = 64;
+  // How next-event estimation chooses a light at `ref` (light_choice.h).
+  LightChoice lightChoice(const Point3f& ref) const;
 
   const SceneSummary& summary() const { return summary_; }
   const Bounds3f& bounds() const { return bounds_; }

@@ -33,21 +33,21 @@ std::string quad(float size, float emit, float z) {
 TEST(LightChoice, ProportionalToTheContributionEstimate) {
   const SceneFile f = sceneOf(quad(1, 4, -1) + ", " + quad(2, 1, -4) + ", " + quad(1, 100, 1));
   const Scene& scene = *f.scene;
-  const Point3f ref = Point3f::Zero();
+  const LightChoice choice = scene.lightChoice(Point3f::Zero());
   const auto& lights = scene.lights();
   ASSERT_EQ(lights.size(), 3u);
   const double expected[] = {4 / 4.25, 0.25 / 4.25, 0};
   for (size_t i = 0; i < 3; ++i)
-    EXPECT_NEAR(scene.lightPmf(ref, lights[i]), expected[i], 1e-6) << "light " << i;
+    EXPECT_NEAR(choice.pmf(lights[i]), expected[i], 1e-6) << "light " << i;
   // Stratified choices: each light's share within one stratum of its probability, and the
-  // probability each choice reports is lightPmf's.
+  // probability each choice reports is pmf()'s.
   constexpr int kChoices = 100000;
   int counts[3] = {0, 0, 0};
   for (int k = 0; k < kChoices; ++k) {
     float pmf = 0;
-    const Light* light = scene.sampleLight(ref, (k + 0.5f) / kChoices, &pmf);
+    const Light* light = choice.sample((k + 0.5f) / kChoices, &pmf);
     ASSERT_NE(light, nullptr);
-    ASSERT_EQ(pmf, scene.lightPmf(ref, light));
+    ASSERT_EQ(pmf, choice.pmf(light));
     ++counts[light->index];
   }
   for (size_t i = 0; i < 3; ++i)
@@ -58,26 +58,29 @@ TEST(LightChoice, ProportionalToTheContributionEstimate) {
 // Where no light faces the point, none is chosen: every light would be sampled in vain.
 TEST(LightChoice, NoneWhereEveryLightFacesAway) {
   const SceneFile f = sceneOf(quad(1, 1, 1) + ", " + quad(1, 1, 2));
+  const LightChoice choice = f.scene->lightChoice(Point3f::Zero());
   float pmf = 1;
-  EXPECT_EQ(f.scene->sampleLight(Point3f::Zero(), 0.3f, &pmf), nullptr);
+  EXPECT_EQ(choice.sample(0.3f, &pmf), nullptr);
   EXPECT_EQ(pmf, 0);
-  EXPECT_EQ(f.scene->lightPmf(Point3f::Zero(), f.scene->lights()[0]), 0);
+  EXPECT_EQ(choice.pmf(f.scene->lights()[0]), 0);
 }
 
 // One light is chosen always, even from behind it (a point sees nothing of it there, and
-// sampleLi declines); more lights than Scene::kLightsChosenByContribution are chosen by power.
+// sampleLi declines); more lights than LightChoice::kMaxLightsByContribution are chosen by
+// power.
 TEST(LightChoice, ByPowerWithOneLightOrVeryMany) {
   const SceneFile one = sceneOf(quad(1, 1, 1));
   float pmf = 0;
-  EXPECT_EQ(one.scene->sampleLight(Point3f::Zero(), 0.5f, &pmf), one.scene->lights()[0]);
+  EXPECT_EQ(one.scene->lightChoice(Point3f::Zero()).sample(0.5f, &pmf), one.scene->lights()[0]);
   EXPECT_EQ(pmf, 1);
   std::string many;
-  for (size_t i = 0; i <= Scene::kLightsChosenByContribution; ++i)
+  for (size_t i = 0; i <= LightChoice::kMaxLightsByContribution; ++i)
     many += (i ? ", " : "") + quad(1, float(i + 1), -1.0f - float(i));
   const SceneFile f = sceneOf(many);
-  ASSERT_GT(f.scene->lights().size(), Scene::kLightsChosenByContribution);
+  ASSERT_GT(f.scene->lights().size(), LightChoice::kMaxLightsByContribution);
+  const LightChoice choice = f.scene->lightChoice(Point3f::Zero());
   for (const Light* light : f.scene->lights())
-    EXPECT_EQ(f.scene->lightPmf(Point3f::Zero(), light), f.scene->lightPmf(light));
+    EXPECT_EQ(choice.pmf(light), f.scene->lightPmf(light));
 }
 
 // A sphere's estimate is its visible cone's solid angle, 2π(1 − cos θmax): for a unit sphere
