@@ -264,17 +264,25 @@ std::optional<Point2d> BsdfModelSubject::audited(const BsdfUniforms& u,
           fmt::format("sample pdf {} vs pdf() {} (ratio {:.6f}, tolerance {:g}) at {}", s->pdf, p,
                       s->pdf / p, tolerance, at()));
     }
-    const Eigen::ArrayXd expected =
-        p > 0 ? Eigen::ArrayXd(f * std::fabs(wo.z()) / p) : Eigen::ArrayXd::Zero(f.size());
+    // eval·|cos θo|/pdf, the weight the sample should carry, one component at a time: no
+    // array is made for a sample that agrees.
+    const double cosine = std::fabs(wo.z());
+    const auto expectedAt = [&](int c) { return p > 0 ? f[c] * cosine / p : 0.0; };
     // The worst component, where any is beyond the tolerance.
     int worst = -1;
-    for (int c = 0; c < f.size(); ++c)
-      if (!relativelyClose(s->weight[c], expected[c], tolerance) &&
-          (worst < 0 || ratioDeviation(s->weight[c], expected[c]) >
-                            ratioDeviation(s->weight[worst], expected[worst])))
+    double deviation = 0;
+    for (int c = 0; c < f.size(); ++c) {
+      const double expected = expectedAt(c);
+      if (relativelyClose(s->weight[c], expected, tolerance)) continue;
+      const double d = ratioDeviation(s->weight[c], expected);
+      if (worst < 0 || d > deviation) {
         worst = c;
+        deviation = d;
+      }
+    }
     if (worst >= 0) {
-      const double deviation = ratioDeviation(s->weight[worst], expected[worst]);
+      Eigen::ArrayXd expected(f.size());
+      for (int c = 0; c < f.size(); ++c) expected[c] = expectedAt(c);
       const auto weightAt = [&](const Vector3d& w) {
         const double pw = model_.pdf(wi, w);
         return pw > 0 ? model_.eval(wi, w)[worst] * std::fabs(w.z()) / pw : 0.0;
@@ -288,7 +296,7 @@ std::optional<Point2d> BsdfModelSubject::audited(const BsdfUniforms& u,
     }
   }
   if (setup_.checkReciprocity) checkReciprocity(wo, f, values.reversed(wo), audit);
-  return sphereCoords(setup_.frame.toWorld(wo));
+  return binned;
 }
 
 void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd& f,
