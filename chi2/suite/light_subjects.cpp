@@ -56,6 +56,7 @@ class LightSubject : public Subject {
       throw std::invalid_argument(s.name + ": area sampling is tested on spheres");
     if (s.sampling == LightSampling::Choice && sphere_)
       throw std::invalid_argument(s.name + ": a choice is tested among planar emitters");
+    choice_ = file_.scene->lightChoice(setup_.ref);
   }
 
   // The light's outline seen from ref is where the density jumps; the inner quadrature
@@ -120,8 +121,7 @@ class LightSubject : public Subject {
     // Points whose front side faces away emit nothing: sampleLi declines them.
     if (!(si.ng.dot(-d) > 0)) return 0;
     if (setup_.sampling == LightSampling::Choice)
-      return double{file_.scene->lightChoice(setup_.ref).pmf(si.light)} *
-             si.light->pdfLi(setup_.ref, si.p, si.ng);
+      return double{choice_.pmf(si.light)} * si.light->pdfLi(setup_.ref, si.p, si.ng);
     return si.light == light_ ? light_->pdfLi(setup_.ref, si.p, si.ng) : 0;
   }
 
@@ -135,10 +135,9 @@ class LightSubject : public Subject {
     const AreaLight* light = light_;
     float pmf = 1;
     if (setup_.sampling == LightSampling::Choice) {
-      const LightChoice choice = file_.scene->lightChoice(setup_.ref);
-      light = static_cast<const AreaLight*>(choice.sample(uniform01(rng), &pmf));
+      light = static_cast<const AreaLight*>(choice_.sample(uniform01(rng), &pmf));
       if (!light) return std::nullopt;
-      const float reported = choice.pmf(light);
+      const float reported = choice_.pmf(light);
       if (pmf != reported)
         audit.record(Defect::SamplePdf,
                      fmt::format("LightChoice::sample's pmf {} != pmf() {}", pmf, reported));
@@ -220,6 +219,7 @@ class LightSubject : public Subject {
   Domain domain_;
   const AreaLight* light_ = nullptr;
   const Sphere* sphere_ = nullptr;
+  LightChoice choice_;  // next-event estimation's choice at ref, made once
 };
 
 }  // namespace
