@@ -244,7 +244,8 @@ int runSweep(const Chi2Args& a, bool samplesGiven) {
   } else {
     o.check.detect->power = a.power;
   }
-  o.configure = [](const chi2::BsdfModel& model, chi2::BsdfCheckOptions& check) {
+  o.configure = [](const chi2::FamilyConfiguration&, const chi2::BsdfModel& model,
+                   chi2::BsdfCheckOptions& check) {
     check.delta.eta = deltaRefractionIndex(model.relativeIndex());
   };
   return exitStatus(runChi2Sweep(a.material, sweeps, o, a.output));

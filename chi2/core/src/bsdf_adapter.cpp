@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "on_threads.h"
+
 namespace verity::chi2 {
 
 namespace {
@@ -21,6 +23,11 @@ void requireTolerance(double value, const char* option) {
 
 CheckResult checkBsdf(const BsdfModel& model, const Eigen::Vector3d& wi,
                       const BsdfCheckOptions& options) {
+  if (options.threads != 0) {
+    BsdfCheckOptions inside = options;
+    inside.threads = 0;
+    return onThreads(options.threads, [&] { return checkBsdf(model, wi, inside); });
+  }
   requireTolerance(options.weightTolerance, "weightTolerance");
   requireTolerance(options.reciprocityTolerance, "reciprocityTolerance");
   BsdfTestSetup setup;

@@ -261,29 +261,41 @@ FamilyResult checkBsdfFamily(const BsdfFamily& family,
   r.parameters = parameters;
   r.configurations = familyConfigurations(parameters, options);
   r.level = options.level;
-  r.statisticalTests =
-      static_cast<int>(r.configurations.size()) *
-      (options.stochastic ? kStatisticalTestsPerStochasticCheck
-                          : kStatisticalTestsPerCheck + options.check.delta.statisticalTests());
-  r.perTestLevel = sidakLevel(options.level, r.statisticalTests);
-  if (CheckProgress* p = options.check.progress)
-    p->checks = static_cast<long long>(r.configurations.size());
+  // Every configuration's model and options first: each configuration's options may state
+  // tests of their own (the delta lobes' expectations), and Šidák's share of the level
+  // follows from the count of all of them.
+  std::vector<BsdfModel> models;
+  std::vector<BsdfCheckOptions> checks;
+  r.statisticalTests = 0;
   for (const FamilyConfiguration& c : r.configurations) {
-    if (CheckProgress* p = options.check.progress) ++p->check;
-    const BsdfModel model = family(c.values);
+    models.push_back(family(c.values));
     if (options.stochastic) {
-      StochasticCheckOptions check = options.stochasticCheck;
-      check.name = c.name;
-      check.significance = r.perTestLevel;
-      r.stochasticResults.push_back(checkStochasticBsdf(model, c.wi(), check));
+      r.statisticalTests += kStatisticalTestsPerStochasticCheck;
       continue;
     }
     BsdfCheckOptions check = options.check;
     check.name = c.name;
-    check.significance = r.perTestLevel;
+    const BsdfModel& model = models.back();
     if (!check.delta.eta && model.relativeIndex() != 1) check.delta.eta = model.relativeIndex();
-    if (options.configure) options.configure(model, check);
-    r.results.push_back(checkBsdf(model, c.wi(), check));
+    if (options.configure) options.configure(c, model, check);
+    r.statisticalTests += kStatisticalTestsPerCheck + check.delta.statisticalTests();
+    checks.push_back(std::move(check));
+  }
+  r.perTestLevel = sidakLevel(options.level, r.statisticalTests);
+  if (CheckProgress* p = options.check.progress)
+    p->checks = static_cast<long long>(r.configurations.size());
+  for (size_t i = 0; i < r.configurations.size(); ++i) {
+    const FamilyConfiguration& c = r.configurations[i];
+    if (CheckProgress* p = options.check.progress) ++p->check;
+    if (options.stochastic) {
+      StochasticCheckOptions check = options.stochasticCheck;
+      check.name = c.name;
+      check.significance = r.perTestLevel;
+      r.stochasticResults.push_back(checkStochasticBsdf(models[i], c.wi(), check));
+      continue;
+    }
+    checks[i].significance = r.perTestLevel;
+    r.results.push_back(checkBsdf(models[i], c.wi(), checks[i]));
   }
   return r;
 }

@@ -12,6 +12,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "on_threads.h"
+
 namespace verity::chi2 {
 
 namespace {
@@ -58,6 +60,11 @@ double detectable(double level, double error, double mean) {
 
 StochasticCheck checkStochasticBsdf(const BsdfModel& model, const Eigen::Vector3d& wiIn,
                                     const StochasticCheckOptions& options) {
+  if (options.threads != 0) {
+    StochasticCheckOptions inside = options;
+    inside.threads = 0;
+    return onThreads(options.threads, [&] { return checkStochasticBsdf(model, wiIn, inside); });
+  }
   const auto start = std::chrono::steady_clock::now();
   if (!(options.significance > 0 && options.significance < 1))
     throw std::invalid_argument(fmt::format(

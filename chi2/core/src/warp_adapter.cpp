@@ -1,9 +1,16 @@
 #include <verity/chi2/warp_adapter.h>
 #include <verity/chi2/warp_subject.h>
 
+#include "on_threads.h"
+
 namespace verity::chi2 {
 
 CheckResult checkWarp(const WarpModel& model, const WarpCheckOptions& options) {
+  if (options.threads != 0) {
+    WarpCheckOptions inside = options;
+    inside.threads = 0;
+    return onThreads(options.threads, [&] { return checkWarp(model, inside); });
+  }
   const int resolution = options.resolution > 0        ? options.resolution
                          : isDirectional(model.domain) ? 32
                                                        : 40;

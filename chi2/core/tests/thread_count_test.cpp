@@ -11,9 +11,11 @@
 #include <verity/chi2/figure_data.h>
 #include <verity/chi2/significance.h>
 
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <regex>
+#include <thread>
 
 #include "phong_toy.h"
 
@@ -69,6 +71,47 @@ TEST(ThreadCount, ReportsAndDataAreTheSameOnOneTwoAndThreeThreads) {
           << cellLayoutName(c.cells);
     EXPECT_EQ(one.test.audit.clean(), c.flaw == Flaw::None) << one.report();
   }
+}
+
+// CheckOptions::threads: with 1 the model's functions are called on the calling thread alone
+// (as a library that binds state to a thread needs), with 2 the check has another thread too;
+// the report and data are those of a check run in an arena of that size.
+TEST(ThreadCount, OneThreadCallsTheModelOnTheCallingThreadAlone) {
+  const phong_toy::Phong p(20.5, Flaw::None);
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<long long> elsewhere = 0;
+  const auto note = [&] { elsewhere += std::this_thread::get_id() != caller; };
+  const BsdfModel model = bsdfModel<Vec3>(
+      [&](const Vec3& wi, const BsdfUniforms& u) {
+        note();
+        return p.sample(wi, u.xy.x, u.xy.y);
+      },
+      [&](const Vec3& wi, const Vec3& wo) {
+        note();
+        return p.eval(wi, wo);
+      },
+      [&](const Vec3& wi, const Vec3& wo) {
+        note();
+        return p.pdf(wi, wo);
+      });
+  BsdfCheckOptions o;
+  o.name = "threads phong";
+  o.significance = sidakLevel(0.01, kStatisticalTestsPerCheck);
+  o.samples = 300'000;
+  o.cells = CellLayout::EqualProbability;
+  const double t = 40 * std::numbers::pi / 180;
+  const Vec3 wi{std::sin(t), 0, std::cos(t)};
+  o.threads = 1;
+  const CheckResult one = checkBsdf(model, wi, o);
+  EXPECT_EQ(elsewhere.load(), 0);
+  EXPECT_EQ(withoutSeconds(one), withoutSeconds(checkOn(1, Flaw::None, o.cells)));
+  o.threads = 2;
+  const CheckResult two = checkBsdf(model, wi, o);
+  EXPECT_EQ(withoutSeconds(two), withoutSeconds(one));
+  // The count sees other threads where there are any: the test above can fail.
+  if (std::thread::hardware_concurrency() > 1) EXPECT_GT(elsewhere.load(), 0);
+  o.threads = -1;
+  EXPECT_THROW(checkBsdf(model, wi, o), std::invalid_argument);
 }
 
 }  // namespace thread_count_test

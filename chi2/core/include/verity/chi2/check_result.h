@@ -46,6 +46,10 @@ struct CheckOptions {
   CellLayout cells = CellLayout::EqualProbability;
   // Where the check has got to, updated as it runs, for a display (phase_times.h); none if null.
   CheckProgress* progress = nullptr;
+  // The threads the check runs on, in a task arena of its own; 0: every core. With 1 it runs
+  // on the calling thread alone, the model's functions included: for a library that binds its
+  // state to a thread (Dr.Jit's scopes). The result is the same for any count.
+  int threads = 0;
 };
 
 struct CheckResult {

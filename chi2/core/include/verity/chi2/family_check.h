@@ -28,6 +28,18 @@ struct FamilyParameter {
   bool logarithmic = false;
 };
 
+struct FamilyConfiguration {
+  std::vector<double> values;  // one per parameter, in their order
+  bool corner = false;         // a corner of the box, else an interior point
+  double incidence = 0;        // degrees from the normal
+  bool below = false;          // wi from below the surface
+  std::string name;            // "alpha=0.001 eta=3 at 89.9° from above"
+
+  // The incident direction in the local frame, (sin θ, 0, ±cos θ) rounded to single precision
+  // and unit there: what a BSDF in float sees is the direction the check's geometry uses.
+  Eigen::Vector3d wi() const;
+};
+
 struct FamilyOptions {
   // Angles of incidence from the normal, in degrees, in [0, 90]: 90 is exactly grazing
   // (wi.z = cos 90° = 6·10⁻¹⁷).
@@ -48,9 +60,15 @@ struct FamilyOptions {
   BsdfCheckOptions check = defaultCheck();
   // Where check.delta.eta is unset, each configuration's delta refraction is held to its
   // model's relative index (interiorIndex / exteriorIndex) unless that is 1. Where set, this
-  // is called last for each configuration with its model and check options, to adjust them
-  // (e.g. a renderer that turns an index within 10⁻³ of 1 into a pass-through).
-  std::function<void(const BsdfModel& model, BsdfCheckOptions& check)> configure;
+  // is called last for each configuration with the configuration, its model and its check
+  // options, to adjust them: what depends on the parameters (the delta lobes' expected shares
+  // and albedos, which Fresnel's equations give per index), or a renderer's rule (an index
+  // within 10⁻³ of 1 turned into a pass-through). It is called for every configuration before
+  // any check runs, so that the family's level is split over the tests each configuration's
+  // options ask for.
+  std::function<void(const FamilyConfiguration& configuration, const BsdfModel& model,
+                     BsdfCheckOptions& check)>
+      configure;
   // Every configuration checked in the mean-weight mode instead (stochastic_check.h), for a
   // BSDF whose eval and sample weight are random estimates (a layered BSDF evaluated by a
   // random walk). `check` and `configure` then do not apply: `stochasticCheck` sets every
@@ -59,18 +77,6 @@ struct FamilyOptions {
   StochasticCheckOptions stochasticCheck;
 
   static BsdfCheckOptions defaultCheck();
-};
-
-struct FamilyConfiguration {
-  std::vector<double> values;  // one per parameter, in their order
-  bool corner = false;         // a corner of the box, else an interior point
-  double incidence = 0;        // degrees from the normal
-  bool below = false;          // wi from below the surface
-  std::string name;            // "alpha=0.001 eta=3 at 89.9° from above"
-
-  // The incident direction in the local frame, (sin θ, 0, ±cos θ) rounded to single precision
-  // and unit there: what a BSDF in float sees is the direction the check's geometry uses.
-  Eigen::Vector3d wi() const;
 };
 
 struct FamilyResult {
@@ -114,9 +120,11 @@ using BsdfFamily = std::function<BsdfModel(const std::vector<double>& values)>;
 std::vector<FamilyConfiguration> familyConfigurations(
     const std::vector<FamilyParameter>& parameters, const FamilyOptions& options);
 
-// Checks every configuration, one after another, each on every core (checkBsdf): the result
-// does not depend on the number of threads. Where options.check.progress is set, its `check`
-// counts the configurations as they start, out of `checks`.
+// Makes every configuration's model and options first (the factory and `configure` are
+// called once per configuration, in order), then checks the configurations one after another,
+// each on every core (checkBsdf): the result does not depend on the number of threads. Where
+// options.check.progress is set, its `check` counts the configurations as they start, out of
+// `checks`.
 FamilyResult checkBsdfFamily(const BsdfFamily& family,
                              const std::vector<FamilyParameter>& parameters,
                              const FamilyOptions& options = {});
