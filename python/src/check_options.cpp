@@ -10,10 +10,10 @@
 namespace verity::python {
 
 const std::vector<std::string> kCheckKeywords = {
-    "name",   "alpha",       "samples",         "seed", "resolution", "power",
-    "detect", "max_samples", "audited_samples", "cells"};
+    "name",   "alpha",       "samples",         "seed",  "resolution", "power",
+    "detect", "max_samples", "audited_samples", "cells", "threads"};
 const std::vector<std::string> kStochasticKeywords = {"name",       "alpha", "samples", "seed",
-                                                      "resolution", "power", "strata"};
+                                                      "resolution", "power", "strata",  "threads"};
 const std::vector<std::string> kBsdfKeywords = {"weight_tolerance",
                                                 "reciprocity_tolerance",
                                                 "direction_rounding",
@@ -91,6 +91,10 @@ void readCheckOptions(const py::kwargs& kw, const std::string& check, chi2::Chec
     o.detect = t;
   }
   read(kw, "max_samples", o.maxSamples);
+  read(kw, "threads", o.threads);
+  if (o.threads < 0)
+    throw py::value_error(
+        fmt::format("{}: threads = {}: must be 0 (every core) or more", check, o.threads));
   long long audited = 0;
   if (read(kw, "audited_samples", audited)) {
     if (audited < 1)
@@ -119,6 +123,10 @@ void readStochasticOptions(const py::kwargs& kw, const std::string& check,
 
 void readBsdfOptions(const py::kwargs& kw, const std::string& check, chi2::BsdfCheckOptions& o) {
   readCheckOptions(kw, check, o);
+  readBsdfKeywords(kw, check, o);
+}
+
+void readBsdfKeywords(const py::kwargs& kw, const std::string& check, chi2::BsdfCheckOptions& o) {
   read(kw, "weight_tolerance", o.weightTolerance);
   read(kw, "reciprocity_tolerance", o.reciprocityTolerance);
   read(kw, "direction_rounding", o.directionRounding);

@@ -10,14 +10,17 @@
 namespace verity::python {
 
 // Options every check takes: name, alpha (the per-test level, required), samples, seed,
-// resolution, power, detect ((density error, mass)), max_samples and cells ("equal" or
-// "grid"). ValueError naming the keyword for a value out of range.
+// resolution, power, detect ((density error, mass)), max_samples, cells ("equal" or "grid")
+// and threads (0: every core; 1: the callables on the calling thread alone). ValueError naming
+// the keyword for a value out of range.
 void readCheckOptions(const py::kwargs& kw, const std::string& check, chi2::CheckOptions& o);
 
 // check_bsdf's own: weight_tolerance, reciprocity_tolerance, reciprocity (bool), eta and
 // direction_tolerance of the delta lobes, and expect = {"reflection": (share, albedo), ...}
 // (either may be None).
 void readBsdfOptions(const py::kwargs& kw, const std::string& check, chi2::BsdfCheckOptions& o);
+// Those alone (kBsdfKeywords), over what `o` holds: a family's options for one configuration.
+void readBsdfKeywords(const py::kwargs& kw, const std::string& check, chi2::BsdfCheckOptions& o);
 
 // check_stochastic_bsdf's: name, alpha, samples, seed, resolution and power as above, and
 // strata (each cell's eval at strata × strata directions; even).

@@ -4,6 +4,8 @@
 #include <pybind11/stl.h>
 #include <verity/chi2/family_check.h>
 
+#include <algorithm>
+#include <map>
 #include <optional>
 
 #include "check_options.h"
@@ -39,6 +41,55 @@ std::vector<chi2::FamilyParameter> readParameters(const py::dict& parameters,
   return out;
 }
 
+// What a factory returned: its BSDF, and the keywords it states for that configuration's check.
+struct Made {
+  chi2::BsdfModel model;
+  py::dict keywords;
+};
+
+// (sample, eval, pdf), (sample, eval, pdf, exterior_index, interior_index), or a dict of these
+// names and any of check_bsdf's BSDF keywords (kBsdfKeywords); in the mean-weight mode also
+// (sample, eval).
+Made madeBsdf(const py::object& bsdf, bool stochastic, const std::string& at) {
+  py::dict fields;
+  if (py::isinstance<py::dict>(bsdf)) {
+    fields = py::reinterpret_borrow<py::dict>(bsdf);
+  } else if (py::isinstance<py::tuple>(bsdf) || py::isinstance<py::list>(bsdf)) {
+    const py::tuple callables(bsdf);
+    const bool pair = stochastic && callables.size() == 2;  // no pdf to give
+    if (callables.size() == 3 || callables.size() == 5 || pair) {
+      const char* names[] = {"sample", "eval", "pdf", "exterior_index", "interior_index"};
+      for (size_t i = 0; i < callables.size(); ++i) fields[names[i]] = callables[i];
+    }
+  }
+  if (!fields.contains("sample") || !fields.contains("eval") ||
+      (!stochastic && !fields.contains("pdf")))
+    throw py::type_error(fmt::format(
+        "{}: the factory must return (sample, eval, pdf), (sample, eval, pdf, exterior_index, "
+        "interior_index){} or a dict of these names and check_bsdf's BSDF keywords; it "
+        "returned {}",
+        at, stochastic ? ", (sample, eval)" : "", py::repr(bsdf).cast<std::string>()));
+  Made m;
+  m.model = pythonBsdf(fields["sample"], fields["eval"],
+                       fields.contains("pdf") ? py::object(fields["pdf"]) : py::none(),
+                       Eigen::Vector3d::UnitZ(), at);
+  for (auto [key, index] : {std::pair{"exterior_index", &m.model.exteriorIndex},
+                            std::pair{"interior_index", &m.model.interiorIndex}})
+    if (fields.contains(key)) {
+      *index = fields[key].cast<double>();
+      if (!(*index > 0))
+        throw py::value_error(fmt::format("{}: {} = {}: must be positive", at, key, *index));
+    }
+  std::vector<std::string> known = kBsdfKeywords;
+  known.insert(known.end(), {"sample", "eval", "pdf", "exterior_index", "interior_index"});
+  requireKnown(py::reinterpret_borrow<py::kwargs>(fields), at + ": the factory's dict", known);
+  for (const auto& [key, value] : fields)
+    if (std::find(kBsdfKeywords.begin(), kBsdfKeywords.end(), py::str(key).cast<std::string>()) !=
+        kBsdfKeywords.end())
+      m.keywords[key] = value;
+  return m;
+}
+
 chi2::FamilyResult checkBsdfFamily(py::object factory, const py::dict& parameters,
                                    const py::kwargs& kw) {
   const std::string check = "check_bsdf_family";
@@ -72,34 +123,40 @@ chi2::FamilyResult checkBsdfFamily(py::object factory, const py::dict& parameter
   if (kw.contains("from_below")) options.fromBelow = kw["from_below"].cast<bool>();
   if (kw.contains("interior_points")) options.interiorPoints = kw["interior_points"].cast<int>();
   const std::vector<chi2::FamilyParameter> box = readParameters(parameters, check);
-  // The models the factory made, dropped here with the GIL held: the family's own copies go
-  // without it, and must not be the last owners of a Python reference.
+  // The models the factory made, and the keywords it stated for each configuration's check,
+  // dropped here with the GIL held: the family's own copies go without it, and must not be the
+  // last owners of a Python reference.
   std::vector<chi2::BsdfModel> made;
+  std::map<std::vector<double>, py::dict> stated;
   const chi2::BsdfFamily family = [&](const std::vector<double>& values) {
     py::gil_scoped_acquire gil;
     py::dict arguments;
     for (size_t i = 0; i < box.size(); ++i) arguments[py::str(box[i].name)] = values[i];
-    const py::object bsdf = factory(**arguments);
     const std::string at = fmt::format("{} at {}", check, py::repr(arguments).cast<std::string>());
-    const bool sequence = py::isinstance<py::tuple>(bsdf) || py::isinstance<py::list>(bsdf);
-    const py::tuple callables = sequence ? py::tuple(bsdf) : py::tuple();
-    const bool pair = options.stochastic && callables.size() == 2;  // no pdf to give
-    if (callables.size() != 3 && callables.size() != 5 && !pair)
+    const Made m = madeBsdf(factory(**arguments), options.stochastic, at);
+    if (options.stochastic && !m.keywords.empty())
       throw py::type_error(fmt::format(
-          "{}: the factory must return (sample, eval, pdf) or (sample, eval, pdf, "
-          "exterior_index, interior_index){}; it returned {}",
-          at, options.stochastic ? ", or (sample, eval)" : "", py::repr(bsdf).cast<std::string>()));
-    chi2::BsdfModel model =
-        pythonBsdf(callables[0], callables[1], pair ? py::none() : py::object(callables[2]),
-                   Eigen::Vector3d::UnitZ(), at);
-    if (callables.size() == 5) {
-      model.exteriorIndex = callables[3].cast<double>();
-      model.interiorIndex = callables[4].cast<double>();
-      if (!(model.exteriorIndex > 0 && model.interiorIndex > 0))
-        throw py::value_error(at + ": the indices of refraction must be positive");
+          "{}: the factory stated {} for the check, which the mean-weight mode does not take", at,
+          py::repr(m.keywords).cast<std::string>()));
+    stated[values] = m.keywords;
+    made.push_back(m.model);
+    return m.model;
+  };
+  // Each configuration's keywords from the factory, over the family's: an `expect` that is
+  // callable is called with the configuration's wi.
+  options.configure = [&](const chi2::FamilyConfiguration& c, const chi2::BsdfModel&,
+                          chi2::BsdfCheckOptions& o) {
+    py::gil_scoped_acquire gil;
+    const py::dict& keywords = stated.at(c.values);
+    if (keywords.empty()) return;
+    py::dict resolved;
+    for (const auto& [key, value] : keywords) resolved[key] = value;
+    if (resolved.contains("expect") && PyCallable_Check(resolved["expect"].ptr())) {
+      const Eigen::Vector3d wi = c.wi();
+      resolved["expect"] = resolved["expect"](py::make_tuple(wi.x(), wi.y(), wi.z()));
     }
-    made.push_back(model);
-    return model;
+    readBsdfKeywords(py::reinterpret_borrow<py::kwargs>(resolved),
+                     fmt::format("{} ({})", check, c.name), o);
   };
   // Validated before any call: a bad range or option is a ValueError at once.
   chi2::familyConfigurations(box, options);
@@ -161,7 +218,9 @@ void bindFamily(py::module_& m) {
         R"(Checks a BSDF over its whole parameter space: every corner of the box of the
 parameters' ranges and a stratified set of points inside it, each at every incidence.
     factory(**values) -> (sample, eval, pdf) or (sample, eval, pdf, exterior_index,
-        interior_index): the three batched callables of check_bsdf for those values
+        interior_index): the three batched callables of check_bsdf for those values; or a
+        dict of these names and check_bsdf's BSDF keywords for that configuration (expect,
+        eta, ...; an expect that is callable is called with the configuration's wi)
     parameters: {name: (lo, hi)} or {name: (lo, hi, 'log')}, ends included (the values your
         loader accepts); 'log' spreads the interior points evenly in log(value)
 Keywords: alpha (required: the family-wise level, split by Sidak over every test),

@@ -97,7 +97,8 @@ PYBIND11_MODULE(verity, m) {
     pdf(wi, wo) -> (N,)
 Local frame: normal +z, wi and wo pointing away from the surface, wo.z < 0 transmits.
 Keywords: wi and alpha (required), name, samples, seed, resolution, power,
-detect=(density_error, mass), max_samples, audited_samples, cells ('equal' or 'grid'), weight_tolerance,
+detect=(density_error, mass), max_samples, audited_samples, cells ('equal' or 'grid'),
+threads (0: every core; 1: every callable on the calling thread), weight_tolerance,
 reciprocity_tolerance, direction_rounding (4 float ulps: how far rounding may move a sampled
 direction, to tell a failed comparison within rounding from one beyond), reciprocity, eta,
 direction_tolerance,
@@ -111,5 +112,5 @@ Returns a Result.)");
         hemisphere and sphere; a row of NaN declines
     pdf(points) -> (N,)  per unit area or solid angle
 Keywords: alpha (required), name, samples, seed, resolution, power,
-detect=(density_error, mass), max_samples, audited_samples, cells. Returns a Result.)");
+detect=(density_error, mass), max_samples, audited_samples, cells, threads. Returns a Result.)");
 }

@@ -78,7 +78,7 @@ Welch's test per cell with Holm's correction, and the total albedo.
     eval(wi, wo) -> (N,) or (N, 3)  an unbiased estimate of f without the cosine
 The callables are called one batch at a time, in a fixed order.
 Keywords: wi and alpha (required), name, samples, seed, resolution (0: 8 cells in cos theta),
-power, strata (each cell's eval at strata x strata directions; even, default 32).
+power, strata (each cell's eval at strata x strata directions; even, default 32), threads.
 Returns a StochasticResult.)");
 }
 

@@ -31,6 +31,51 @@ class Lambert:
         return np.where(wo[..., 2] > 0, self.scale_pdf * wo[..., 2] / np.pi, 0.0)
 
 
+def fresnel(cos_i, eta):
+    """Unpolarised Fresnel reflectance of a dielectric of relative index eta (below / above), for
+    cos θi on either side."""
+    if cos_i < 0:
+        eta, cos_i = 1 / eta, -cos_i
+    sin2_t = (1 - cos_i * cos_i) / (eta * eta)
+    if sin2_t >= 1:
+        return 1.0
+    cos_t = np.sqrt(1 - sin2_t)
+    rs = (cos_i - eta * cos_t) / (cos_i + eta * cos_t)
+    rp = (eta * cos_i - cos_t) / (eta * cos_i + cos_t)
+    return (rs * rs + rp * rp) / 2
+
+
+class Glass:
+    """Smooth glass of relative index eta: reflection or refraction chosen by Fresnel's
+    reflectance, the refraction's radiance scaled by 1/η'² (η' the index across, seen from wi).
+    Delta lobes only."""
+
+    def __init__(self, eta):
+        self.eta = eta
+
+    def sample(self, wi, u):
+        r = fresnel(wi[2], self.eta)
+        e = self.eta if wi[2] > 0 else 1 / self.eta
+        reflect = u[:, 0] < r
+        wo = np.tile([-wi[0], -wi[1], wi[2]], (len(u), 1))
+        if r < 1:
+            cos_t = np.sqrt(1 - (1 - wi[2] ** 2) / (e * e))
+            wo[~reflect] = [-wi[0] / e, -wi[1] / e, -cos_t if wi[2] > 0 else cos_t]
+        weight = np.where(reflect, 1.0, 1 / (e * e))
+        pdf = np.where(reflect, r, 1 - r)
+        return wo, weight, pdf, np.ones(len(u), dtype=bool)
+
+    def expect(self, wi):
+        """check_bsdf's `expect` at wi: each lobe's share and albedo."""
+        r = fresnel(wi[2], self.eta)
+        e = self.eta if wi[2] > 0 else 1 / self.eta
+        return {"reflection": (r, [r]), "refraction": (1 - r, [(1 - r) / (e * e)])}
+
+    @staticmethod
+    def zero(wi, wo):
+        return np.zeros(len(wo))
+
+
 def uniform_square(u):
     return u
 

@@ -9,6 +9,7 @@ plumbing matters) on the grid of cells, cheaper to integrate than equal-probabil
 each planted error is found by a wide margin at that count (the broken GGX: chi-square
 p < 1e-30)."""
 import os
+import threading
 
 import numpy as np
 import pytest
@@ -121,3 +122,26 @@ def test_delta_lobes_are_counted_and_checked_apart():
     r = verity.check_bsdf(bent, zero, zero, wi=WI, name="py mirror bent", alpha=ALPHA,
                           samples=20_000)
     assert r.verdict == "FAILED" and "delta direction" in r.failures, str(r)
+
+
+def test_one_thread_calls_every_callable_on_the_calling_thread():
+    lobe, caller, elsewhere = Lambert(), threading.get_ident(), []
+
+    def noted(function):
+        def call(*args):
+            if threading.get_ident() != caller:
+                elsewhere.append(function.__name__)
+            return function(*args)
+        return call
+
+    kw = dict(wi=WI, name="py lambert threads", **FAST)
+    one = verity.check_bsdf(noted(lobe.sample), noted(lobe.eval), noted(lobe.pdf), threads=1, **kw)
+    assert one.passed, str(one)
+    assert not elsewhere
+    # The same result on every core, where the callables may be called from other threads.
+    every = verity.check_bsdf(noted(lobe.sample), noted(lobe.eval), noted(lobe.pdf), **kw)
+    assert every.chi_square == one.chi_square and every.pdf_integral == one.pdf_integral
+    if os.cpu_count() > 1:
+        assert elsewhere  # the test above can fail
+    with pytest.raises(ValueError, match="threads = -1: must be 0"):
+        verity.check_bsdf(lobe.sample, lobe.eval, lobe.pdf, threads=-1, **kw)
