@@ -2,6 +2,7 @@
 
 #include <pybind11/stl.h>
 #include <verity/chi2/check_result.h>
+#include <verity/chi2/figure_data.h>
 
 namespace verity::python {
 
@@ -93,6 +94,18 @@ void bindCheckResult(py::module_& m) {
           "unless audited_samples chose fewer), and 'reach', the least fraction of the samples a "
           "defect must touch to be met among them with probability 'power'")
       .def_property_readonly("report", &CheckResult::report)
+      .def(
+          "figure_json", [](const CheckResult& r) { return chi2::figureJson(r.test); },
+          "the data of the check's figure (cells, observed and expected counts, verdicts) as "
+          "JSON, which share/verity/plot_chi2.py draws")
+      .def(
+          "write_figure_data",
+          [](const CheckResult& r, const std::string& path) {
+            chi2::writeFigureData(r.test, path);
+          },
+          py::arg("path"),
+          "writes figure_json() to path, for python3 <prefix>/share/verity/plot_chi2.py "
+          "PATH PNG")
       .def("__str__", &CheckResult::report)
       .def("__repr__", [](const CheckResult& r) {
         return "<verity.Result " + chi2::verdictName(r.verdict()) + ">";

@@ -6,6 +6,9 @@ Level: the family's own, ALPHA = 1e-3 over its 12 statistical tests (Sidak), as 
 checks are at 1e-3 each. These tests are about behaviour, not power: 10^5 samples on the grid
 of cells; the planted error (the example's broken GGX) is found with chi-square p < 1e-30."""
 import json
+import subprocess
+import sys
+from pathlib import Path
 from xml.etree import ElementTree
 
 import pytest
@@ -110,3 +113,21 @@ def test_a_factorys_dict_is_read_by_name():
         return {"sample": Glass(eta).sample, "eval": Glass.zero}
     with pytest.raises(TypeError, match="must return .* or a dict"):
         verity.check_bsdf_family(no_pdf, {"eta": (1.1, 2.0)}, **GLASS)
+
+
+def test_a_failing_configurations_figure_is_drawn_from_python(tmp_path):
+    r = verity.check_bsdf_family(ggx_family(0.99), {"alpha": (0.1, 1.0, "log")}, **FAST)
+    failed = next(c for c in r.configurations if not c["result"].passed)
+    data = json.loads(failed["result"].figure_json())
+    assert data["verdict"] == "FAILED" and data["chi_square"]["passed"] is False
+    assert sum(map(sum, data["observed"])) == data["valid"] - data["outside"]
+    path = tmp_path / "alpha-1.json"
+    failed["result"].write_figure_data(str(path))
+    assert json.loads(path.read_text())["observed"] == data["observed"]
+    # Drawn by the script installed beside the package (share/verity/plot_chi2.py).
+    script = Path(__file__).resolve().parents[2] / "chi2" / "core" / "plot_chi2.py"
+    subprocess.run([sys.executable, str(script), str(path), str(tmp_path / "alpha-1.png")],
+                   check=True)
+    assert (tmp_path / "alpha-1.png").stat().st_size > 10_000
+    with pytest.raises(RuntimeError, match="no-such-folder"):
+        failed["result"].write_figure_data(str(tmp_path / "no-such-folder" / "x.json"))
