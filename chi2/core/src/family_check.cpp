@@ -261,6 +261,8 @@ FamilyResult checkBsdfFamily(const BsdfFamily& family,
   r.parameters = parameters;
   r.configurations = familyConfigurations(parameters, options);
   r.level = options.level;
+  if (CheckProgress* p = options.check.progress)
+    p->checks = static_cast<long long>(r.configurations.size());
   // Every configuration's model and options first: each configuration's options may state
   // tests of their own (the delta lobes' expectations), and Šidák's share of the level
   // follows from the count of all of them.
@@ -282,8 +284,6 @@ FamilyResult checkBsdfFamily(const BsdfFamily& family,
     checks.push_back(std::move(check));
   }
   r.perTestLevel = sidakLevel(options.level, r.statisticalTests);
-  if (CheckProgress* p = options.check.progress)
-    p->checks = static_cast<long long>(r.configurations.size());
   for (size_t i = 0; i < r.configurations.size(); ++i) {
     const FamilyConfiguration& c = r.configurations[i];
     if (CheckProgress* p = options.check.progress) ++p->check;
