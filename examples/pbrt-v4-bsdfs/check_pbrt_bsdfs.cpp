@@ -144,6 +144,7 @@ int main(int argc, char** argv) {
     options.fromBelow = family.fromBelow;
     options.stochastic = family.stochastic;
     options.stochasticCheck.samples = args.stochasticSamples;
+    options.configure = family.configure;
     // A failed comparison is within rounding where moving the sampled direction by 4 units in
     // the last place of pbrt's Float moves its reference as far.
     options.check.directionRounding = 2 * std::numeric_limits<pbrt::Float>::epsilon();

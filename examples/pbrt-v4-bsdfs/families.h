@@ -4,6 +4,7 @@
 
 #include <verity/chi2/family_check.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,11 @@ struct Family {
   // f and Sample_f are random estimates (pbrt's layered BxDFs): checked in the mean-weight
   // mode (FamilyOptions::stochastic).
   bool stochastic = false;
+  // What each configuration's check states beside the family's options: the delta lobes'
+  // shares and albedos where Fresnel's equations give them (FamilyOptions::configure).
+  std::function<void(const verity::chi2::FamilyConfiguration&, const verity::chi2::BsdfModel&,
+                     verity::chi2::BsdfCheckOptions&)>
+      configure;
 };
 
 // layeredMaxDepth: the random walks' bounces in the layered BxDFs (pbrt's coated materials'
