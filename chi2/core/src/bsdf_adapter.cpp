@@ -23,11 +23,8 @@ void requireTolerance(double value, const char* option) {
 
 CheckResult checkBsdf(const BsdfModel& model, const Eigen::Vector3d& wi,
                       const BsdfCheckOptions& options) {
-  if (options.threads != 0) {
-    BsdfCheckOptions inside = options;
-    inside.threads = 0;
-    return onThreads(options.threads, [&] { return checkBsdf(model, wi, inside); });
-  }
+  if (options.threads != 0)
+    return onThreads(options, [&](const BsdfCheckOptions& o) { return checkBsdf(model, wi, o); });
   requireTolerance(options.weightTolerance, "weightTolerance");
   requireTolerance(options.reciprocityTolerance, "reciprocityTolerance");
   BsdfTestSetup setup;

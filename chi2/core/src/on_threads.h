@@ -5,20 +5,21 @@
 #include <tbb/task_arena.h>
 
 #include <stdexcept>
-#include <utility>
 
 namespace verity::chi2 {
 
-// f() in a task arena of `threads` threads (the calling thread among them), or in the
-// current one for 0. With 1 every task of f runs on the calling thread.
-template <class F>
-auto onThreads(int threads, F&& f) {
-  if (threads < 0)
+// For options.threads other than 0: check of a copy of the options whose threads is 0 (the
+// check itself), in a task arena of options.threads threads, the calling thread among them
+// (with 1, every task of the check runs on it).
+template <class Options, class Check>
+auto onThreads(const Options& options, Check&& check) {
+  if (options.threads < 0)
     throw std::invalid_argument(
-        fmt::format("CheckOptions::threads = {}: must be 0 (every core) or more", threads));
-  if (threads == 0) return f();
-  tbb::task_arena arena(threads);
-  return arena.execute(std::forward<F>(f));
+        fmt::format("CheckOptions::threads = {}: must be 0 (every core) or more", options.threads));
+  Options inside = options;
+  inside.threads = 0;
+  tbb::task_arena arena(options.threads);
+  return arena.execute([&] { return check(inside); });
 }
 
 }  // namespace verity::chi2

@@ -60,11 +60,10 @@ double detectable(double level, double error, double mean) {
 
 StochasticCheck checkStochasticBsdf(const BsdfModel& model, const Eigen::Vector3d& wiIn,
                                     const StochasticCheckOptions& options) {
-  if (options.threads != 0) {
-    StochasticCheckOptions inside = options;
-    inside.threads = 0;
-    return onThreads(options.threads, [&] { return checkStochasticBsdf(model, wiIn, inside); });
-  }
+  if (options.threads != 0)
+    return onThreads(options, [&](const StochasticCheckOptions& o) {
+      return checkStochasticBsdf(model, wiIn, o);
+    });
   const auto start = std::chrono::steady_clock::now();
   if (!(options.significance > 0 && options.significance < 1))
     throw std::invalid_argument(fmt::format(

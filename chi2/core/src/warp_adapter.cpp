@@ -6,11 +6,8 @@
 namespace verity::chi2 {
 
 CheckResult checkWarp(const WarpModel& model, const WarpCheckOptions& options) {
-  if (options.threads != 0) {
-    WarpCheckOptions inside = options;
-    inside.threads = 0;
-    return onThreads(options.threads, [&] { return checkWarp(model, inside); });
-  }
+  if (options.threads != 0)
+    return onThreads(options, [&](const WarpCheckOptions& o) { return checkWarp(model, o); });
   const int resolution = options.resolution > 0        ? options.resolution
                          : isDirectional(model.domain) ? 32
                                                        : 40;
