@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 
+#include "callback.h"
 #include "check_options.h"
 #include "python_bsdf.h"
 
@@ -149,14 +150,15 @@ chi2::FamilyResult checkBsdfFamily(py::object factory, const py::dict& parameter
     py::gil_scoped_acquire gil;
     const py::dict& keywords = stated.at(c.values);
     if (keywords.empty()) return;
+    const std::string at = fmt::format("{} ({})", check, c.name);
     py::dict resolved;
     for (const auto& [key, value] : keywords) resolved[key] = value;
     if (resolved.contains("expect") && PyCallable_Check(resolved["expect"].ptr())) {
       const Eigen::Vector3d wi = c.wi();
-      resolved["expect"] = resolved["expect"](py::make_tuple(wi.x(), wi.y(), wi.z()));
+      resolved["expect"] = call({resolved["expect"], at, "expect(wi)"},
+                                py::make_tuple(py::make_tuple(wi.x(), wi.y(), wi.z())));
     }
-    readBsdfKeywords(py::reinterpret_borrow<py::kwargs>(resolved),
-                     fmt::format("{} ({})", check, c.name), o);
+    readBsdfKeywords(py::reinterpret_borrow<py::kwargs>(resolved), at, o);
   };
   // Validated before any call: a bad range or option is a ValueError at once.
   chi2::familyConfigurations(box, options);

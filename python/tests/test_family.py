@@ -109,6 +109,13 @@ def test_a_factorys_dict_is_read_by_name():
     with pytest.raises(TypeError, match="factory's dict: unknown keyword argument 'colour'"):
         verity.check_bsdf_family(unknown, {"eta": (1.1, 2.0)}, **GLASS)
 
+    def raising(eta):
+        return {"sample": Glass(eta).sample, "eval": Glass.zero, "pdf": Glass.zero,
+                "expect": lambda wi: 1 / 0}
+    with pytest.raises(RuntimeError, match=r"eta=1\.1 at 20° from above\): expect\(wi\) raised") as e:
+        verity.check_bsdf_family(raising, {"eta": (1.1, 2.0)}, **GLASS)
+    assert isinstance(e.value.__cause__, ZeroDivisionError)
+
     def no_pdf(eta):
         return {"sample": Glass(eta).sample, "eval": Glass.zero}
     with pytest.raises(TypeError, match="must return .* or a dict"):
