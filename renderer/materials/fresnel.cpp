@@ -47,9 +47,9 @@ float conductorChannel(float cosThetaI, float eta, float k) {
   const float t3 = cos2 * a2PlusB2 + sin2 * sin2, t4 = t2 * sin2;
   // Both vanish only for an index-matched, loss-free "conductor" at grazing incidence.
   if (t1 + t2 == 0 || t3 + t4 == 0) return 1.0f;
-  const float rs = (t1 - t2) / (t1 + t2);
-  const float rp = rs * (t3 - t4) / (t3 + t4);
-  const float r = 0.5f * (rs + rp);
+  // (Rs + Rp)/2 with Rs = (t1 − t2)/(t1 + t2) and Rp = Rs (t3 − t4)/(t3 + t4), which is
+  // Rs t3/(t3 + t4): one division.
+  const float r = (t1 - t2) * t3 / ((t1 + t2) * (t3 + t4));
   return std::isfinite(r) ? std::clamp(r, 0.0f, 1.0f) : 1.0f;
 }
 }  // namespace

@@ -1,5 +1,7 @@
 #include "materials/microfacet.h"
 
+#include <numbers>
+
 #include <boost/math/special_functions/beta.hpp>
 #include <boost/math/special_functions/erf.hpp>
 
@@ -32,15 +34,16 @@ T MicrofacetDistribution::D(const Vec3<T>& m) const {
   const T sin2 = m.x() * m.x() + m.y() * m.y();
   if (type_ == MicrofacetType::GGX) {
     // D = 1 / (π α² (sin²θ/α² + cos²θ)²), the form of Heitz 2018 eq. 1, which needs neither
-    // tan θ nor cos⁴θ (Trowbridge and Reitz 1975; Walter et al. 2007 eq. 33).
-    const T t = sin2 / a2 + cos2;
-    return T(1) / (T(kPi) * a2 * t * t);
+    // tan θ nor cos⁴θ (Trowbridge and Reitz 1975; Walter et al. 2007 eq. 33), as
+    // α² / (π (sin²θ + α² cos²θ)²): one division.
+    const T t = sin2 + a2 * cos2;
+    return a2 / (std::numbers::pi_v<T> * t * t);
   }
   // Beckmann: exp(−tan²θ/α²) / (π α² cos⁴θ) (Walter et al. 2007, eq. 25). When cos⁴θ
   // underflows the exponential has long been zero.
   const T cos4 = cos2 * cos2;
   if (cos4 < T(1e-30)) return 0;
-  const T d = std::exp(-sin2 / (cos2 * a2)) / (T(kPi) * a2 * cos4);
+  const T d = std::exp(-sin2 / (cos2 * a2)) / (std::numbers::pi_v<T> * a2 * cos4);
   return std::isfinite(d) ? d : T(0);
 }
 
@@ -67,14 +70,32 @@ T MicrofacetDistribution::Lambda(const Vec3<T>& v) const {
 }
 
 template <class T>
+T MicrofacetDistribution::ggxRoot(const Vec3<T>& v) const {
+  const T alpha = alpha_;
+  return std::sqrt(v.z() * v.z() + alpha * alpha * (v.x() * v.x() + v.y() * v.y()));
+}
+
+template <class T>
 T MicrofacetDistribution::G1(const Vec3<T>& v, const Vec3<T>& m) const {
   if (v.dot(m) * v.z() <= 0) return 0;
+  if (type_ == MicrofacetType::GGX) {
+    // 1/(1 + Λ) with 1 + Λ = (|cos θ| + ggxRoot)/(2 |cos θ|).
+    const T c = std::fabs(v.z()), d = c + ggxRoot(v);
+    return d > 0 ? T(2) * c / d : T(0);
+  }
   return T(1) / (T(1) + Lambda(v));
 }
 
 template <class T>
 T MicrofacetDistribution::G2(const Vec3<T>& wi, const Vec3<T>& wo, const Vec3<T>& m) const {
   if (wi.dot(m) * wi.z() <= 0 || wo.dot(m) * wo.z() <= 0) return 0;
+  if (type_ == MicrofacetType::GGX && wi.z() * wo.z() > 0) {
+    // 1/(1 + Λi + Λo) with 1 + Λi + Λo = (ggxRoot(wi)/|cos θi| + ggxRoot(wo)/|cos θo|)/2: one
+    // division instead of five.
+    const T ci = std::fabs(wi.z()), co = std::fabs(wo.z());
+    const T d = co * ggxRoot(wi) + ci * ggxRoot(wo);
+    return d > 0 ? T(2) * ci * co / d : T(0);
+  }
   const T li = Lambda(wi), lo = Lambda(wo);
   if (!std::isfinite(li) || !std::isfinite(lo)) return 0;
   if (wi.z() * wo.z() > 0) return T(1) / (T(1) + li + lo);
@@ -109,9 +130,11 @@ Vector3f MicrofacetDistribution::sampleNormal(const Vector3f& wi, Point2f u) con
 // sampled disk onto the hemisphere, the disk's far half squeezed by the projected area of
 // the half facing away from the view.
 Vector3f MicrofacetDistribution::sampleGGXVisible(const Vector3f& wi, const Point2f& u) const {
-  const Vector3f v = Vector3f(alpha_ * wi.x(), alpha_ * wi.y(), wi.z()).normalized();
+  // Each normalisation multiplies by one reciprocal rather than dividing every component.
+  const Vector3f stretched(alpha_ * wi.x(), alpha_ * wi.y(), wi.z());
+  const Vector3f v = stretched * (1.0f / stretched.norm());
   const float len2 = v.x() * v.x() + v.y() * v.y();
-  const Vector3f t1 = len2 > 0 ? Vector3f(Vector3f(-v.y(), v.x(), 0.0f) / std::sqrt(len2))
+  const Vector3f t1 = len2 > 0 ? Vector3f(Vector3f(-v.y(), v.x(), 0.0f) * (1.0f / std::sqrt(len2)))
                                : Vector3f(Vector3f::UnitX());
   const Vector3f t2 = v.cross(t1);
   const float r = std::sqrt(u.x());
@@ -123,7 +146,7 @@ Vector3f MicrofacetDistribution::sampleGGXVisible(const Vector3f& wi, const Poin
   // Unstretch back to roughness α.
   const Vector3f m(alpha_ * n.x(), alpha_ * n.y(), std::max(n.z(), 0.0f));
   const float len = m.norm();
-  return len > 0 ? Vector3f(m / len) : Vector3f::UnitZ();
+  return len > 0 ? Vector3f(m * (1.0f / len)) : Vector3f::UnitZ();
 }
 
 // Heitz and d'Eon 2014, "Importance Sampling Microfacet-Based BSDFs using the Distribution
@@ -185,6 +208,7 @@ T MicrofacetDistribution::pdfNormal(const Vec3<T>& wi, const Vec3<T>& m) const {
 #define VERITY_MICROFACET_INSTANTIATE(T)                                                       \
   template T MicrofacetDistribution::D(const Vec3<T>&) const;                                  \
   template T MicrofacetDistribution::Lambda(const Vec3<T>&) const;                             \
+  template T MicrofacetDistribution::ggxRoot(const Vec3<T>&) const;                            \
   template T MicrofacetDistribution::G1(const Vec3<T>&, const Vec3<T>&) const;                 \
   template T MicrofacetDistribution::G2(const Vec3<T>&, const Vec3<T>&, const Vec3<T>&) const; \
   template T MicrofacetDistribution::pdfNormal(const Vec3<T>&, const Vec3<T>&) const;

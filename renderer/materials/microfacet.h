@@ -56,6 +56,10 @@ class MicrofacetDistribution {
   T pdfNormal(const Vec3<T>& wi, const Vec3<T>& m) const;
 
  private:
+  // √(cos²θ + α² sin²θ) = |cos θ| √(1 + α² tan²θ): GGX's Λ(v) is (ggxRoot/|cos θ| − 1)/2
+  // (Heitz 2014, eq. 72), written without tan θ so that G1 and G2 take one division each.
+  template <class T>
+  T ggxRoot(const Vec3<T>& v) const;
   Vector3f sampleGGXVisible(const Vector3f& wi, const Point2f& u) const;
   Vector3f sampleBeckmannVisible(const Vector3f& wi, const Point2f& u) const;
 

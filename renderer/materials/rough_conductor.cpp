@@ -38,7 +38,7 @@ std::optional<RoughConductor::HalfVector> RoughConductor::halfVector(const Vecto
   const Eigen::Vector3d sum = g.i + g.o;
   const double length = sum.norm();
   if (length == 0) return std::nullopt;
-  g.h = sum / length;
+  g.h = sum * (1 / length);
   g.halfLength = 0.5 * length;
   return g;
 }

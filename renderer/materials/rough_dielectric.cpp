@@ -43,7 +43,7 @@ bool RoughDielectric::geometry(const Vector3f& wiF, const Vector3f& woF, Geometr
       g.reflection ? Eigen::Vector3d(wi + wo) : Eigen::Vector3d(g.etaI * wi + g.etaO * wo);
   const double len = h.norm();
   if (!(len > 0) || !std::isfinite(len)) return false;
-  g.h = h / len;
+  g.h = h * (1 / len);
   if (g.h.z() < 0) g.h = -g.h;
   if (!(g.h.z() > 0)) return false;
   // Each direction must lie on its own side of the microfacet too.

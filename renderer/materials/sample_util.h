@@ -30,7 +30,11 @@ inline std::optional<BsdfSample> makeSample(const Vector3f& wo, const Color3& f,
 // with a grazing wi, read in single precision is off by more than the lobe's width. The
 // double normalisation recovers x from the small components to 1e-16.
 inline Eigen::Vector3d unitDouble(const Vector3f& v) {
-  return v.cast<double>().normalized();
+  // One division, not Eigen's three: within an ulp of v/|v|. A zero vector stays zero, as
+  // Eigen's normalized() leaves it.
+  const Eigen::Vector3d d = v.cast<double>();
+  const double n = d.norm();
+  return n > 0 ? Eigen::Vector3d(d * (1 / n)) : d;
 }
 
 // Clamps a value computed from textures or formulas to a finite, non-negative colour.

@@ -95,6 +95,45 @@ TEST(Microfacet, LambdaMatchesClosedForms) {
   }
 }
 
+// GGX's D, G1 and reflection G2, which the distribution evaluates without tan θ, against the
+// textbook forms in long double: D = 1/(π α² cos⁴θ (1 + tan²θ/α²)²) (Walter et al. 2007,
+// eq. 33), G1 = 1/(1 + Λ) and G2 = 1/(1 + Λ(wi) + Λ(wo)) with Λ = (√(1 + α² tan²θ) − 1)/2
+// (Heitz 2014, eq. 72), from the roughest α to the smoothest and out to grazing directions.
+TEST(Microfacet, GgxTermsMatchTheirTextbookForms) {
+  using Vec3d = Eigen::Vector3d;
+  const auto dir = [](long double thetaDeg, long double phi) {
+    const long double t = thetaDeg * kPiD / 180;
+    return Vec3d(double(std::sin(t) * std::cos(phi)), double(std::sin(t) * std::sin(phi)),
+                 double(std::cos(t)));
+  };
+  const auto tan2 = [](const Vec3d& v) {
+    return ((long double)v.x() * v.x() + (long double)v.y() * v.y()) / ((long double)v.z() * v.z());
+  };
+  for (float alpha : {1e-4f, 0.01f, 0.3f, 1.0f, 4.0f}) {
+    const MicrofacetDistribution d(MicrofacetType::GGX, alpha);
+    const long double a2 = (long double)alpha * alpha;
+    const auto lambda = [&](const Vec3d& v) { return (std::sqrt(1 + a2 * tan2(v)) - 1) / 2; };
+    for (double thetaI : {0.0, 30.0, 60.0, 85.0, 89.9}) {
+      const Vec3d wi = dir(thetaI, 0.3);
+      for (double thetaM : {0.0, 1e-3, 1.0, 20.0, 50.0, 80.0}) {
+        const Vec3d m = dir(thetaM, 0.5);
+        const long double c2 = (long double)m.z() * m.z(), t = 1 + tan2(m) / a2;
+        const long double dExpected = 1 / (kPiD * a2 * c2 * c2 * t * t);
+        EXPECT_NEAR(d.D(m), double(dExpected), 1e-12 * double(dExpected))
+            << "alpha " << alpha << " theta_m " << thetaM;
+        if (wi.dot(m) > 0)
+          EXPECT_NEAR(d.G1(wi, m), double(1 / (1 + lambda(wi))), 1e-13)
+              << "alpha " << alpha << " theta_i " << thetaI << " theta_m " << thetaM;
+      }
+      for (double thetaO : {0.0, 45.0, 88.0, 89.99}) {
+        const Vec3d wo = dir(thetaO, 2.0), h = (wi + wo).normalized();
+        EXPECT_NEAR(d.G2(wi, wo, h), double(1 / (1 + lambda(wi) + lambda(wo))), 1e-13)
+            << "alpha " << alpha << " theta_i " << thetaI << " theta_o " << thetaO;
+      }
+    }
+  }
+}
+
 // The guards: no NaN or Inf at α = 1e-4 (and below, clamped), wi.z = 0, 89.99°, for
 // extreme sample values, and D = 0 where cos⁴θ underflows.
 TEST(Microfacet, GuardsAtDegenerateInputs) {
