@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include "cell_locator.h"
+
 namespace verity::chi2 {
 
 namespace {
@@ -137,6 +139,7 @@ double BsdfModelSubject::drawingFloorSeconds(const Domain& cells, long long n, u
                                              long long& binned) const {
   const PhaseClock clock;
   std::vector<long long> hist(cells.cells(), 0);
+  const CellLocator locator(cells);
   std::vector<BsdfUniforms> us;
   std::vector<std::optional<DirectionSample>> drawn;
   for (long long c = 0; c * kSamplesPerStream < n; ++c) {
@@ -146,7 +149,7 @@ double BsdfModelSubject::drawingFloorSeconds(const Domain& cells, long long n, u
     draw(rng, us, drawn);
     for (const std::optional<DirectionSample>& s : drawn) {
       if (!evaluable(s)) continue;
-      const int cell = cells.cellOf(sphereCoords(setup_.frame.toWorld(s->wo)));
+      const int cell = locator.cellOf(sphereCoords(setup_.frame.toWorld(s->wo)));
       if (cell >= 0) ++hist[cell];
     }
   }

@@ -9,6 +9,8 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "cell_locator.h"
+
 namespace verity::chi2 {
 
 uint64_t seedFromName(const std::string& name) {
@@ -175,6 +177,7 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
     options.progress->samples = r.samples;
     options.progress->drawn = 0;  // a run of several checks shares one progress
   }
+  const CellLocator locator(d);
   tbb::parallel_for(0LL, chunks, [&](long long c) {
     const PhaseClock drawClock;
     pcg32 rng(options.seed, static_cast<uint64_t>(c));
@@ -190,7 +193,7 @@ TestResult runSamplingTest(const Subject& subject, const TestOptions& options) {
     for (const std::optional<Point2d>& p : points) {
       if (!p) continue;
       ++valid;
-      const int cell = d.cellOf(*p);
+      const int cell = locator.cellOf(*p);
       if (cell < 0 || !d.inSupport(*p)) {
         ++outside;
         continue;
