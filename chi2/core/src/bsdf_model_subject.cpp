@@ -2,11 +2,10 @@
 #include <fmt/ranges.h>
 #include <tbb/parallel_for.h>
 #include <verity/chi2/bsdf_model_subject.h>
+#include <verity/chi2/cell_locator.h>
 #include <verity/chi2/phase_times.h>
 
 #include <cmath>
-
-#include "cell_locator.h"
 
 namespace verity::chi2 {
 

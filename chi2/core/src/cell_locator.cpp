@@ -1,4 +1,4 @@
-#include "cell_locator.h"
+#include <verity/chi2/cell_locator.h>
 
 #include <algorithm>
 

@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
+#include <verity/chi2/cell_locator.h>
 #include <verity/chi2/partition.h>
 #include <verity/chi2/sampling_check.h>
 
@@ -8,8 +9,6 @@
 #include <limits>
 #include <mutex>
 #include <stdexcept>
-
-#include "cell_locator.h"
 
 namespace verity::chi2 {
 

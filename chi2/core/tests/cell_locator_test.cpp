@@ -1,10 +1,9 @@
-// CellLocator (src/cell_locator.h), the binning's guide-table search, names the cell
+// CellLocator (cell_locator.h), the binning's guide-table search, names the cell
 // Domain::cellOf names for every point: on edges, a float step either side of them, at equal
 // edges (cells of no width), in pieces many times wider than the rest, and on equal-probability
 // cells of a narrow lobe.
-#include "../src/cell_locator.h"
-
 #include <gtest/gtest.h>
+#include <verity/chi2/cell_locator.h>
 #include <verity/chi2/partition.h>
 
 #include <cmath>
