@@ -19,7 +19,7 @@ void CellLocator::Pieces::build(const double* e, int pieces) {
   guide.resize(buckets);
   int k = 0;
   for (int b = 0; b < buckets; ++b) {
-    const double start = lo + b / scale;
+    const double start = lo + width * b / buckets;  // no 0/0 where every edge is one value
     while (k < n - 1 && edges[k + 1] <= start) ++k;
     guide[b] = k;
   }
@@ -29,9 +29,8 @@ int CellLocator::Pieces::pieceOf(double v) const {
   // The largest k in [0, n − 1] with edges[k] ≤ v, as Domain::cellOf's upper_bound finds it:
   // the guide's guess, moved down where rounding put v's bucket above it, then up past every
   // edge at or below v (equal edges included).
-  const double b = (v - lo) * scale;
-  int k =
-      guide[std::clamp(static_cast<int>(b >= 0 ? b : 0), 0, static_cast<int>(guide.size()) - 1)];
+  const double last = static_cast<double>(guide.size() - 1);
+  int k = guide[static_cast<size_t>(std::clamp((v - lo) * scale, 0.0, last))];
   while (k > 0 && edges[k] > v) --k;
   while (k < n - 1 && edges[k + 1] <= v) ++k;
   return k;
