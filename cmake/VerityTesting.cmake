@@ -1,6 +1,6 @@
 # verity_discover_tests(TARGET [NAME name] [PREFIX prefix] [FILTER gtest-filter]
-#                       [RESOURCE_LOCK lock] [COST seconds] [WHOLE_SUITES suite...]
-#                       LABELS label...):
+#                       [RESOURCE_LOCK lock] [COST seconds] [THREADS n]
+#                       [WHOLE_SUITES suite...] LABELS label...):
 # registers a GoogleTest executable's tests (those FILTER selects) with CTest and gives every
 # discovered test all the labels. NAME tells apart several registrations of one target.
 # Labels are set after discovery because CMake 3.25's gtest discovery flattens list values
@@ -13,9 +13,12 @@
 # than passing with nothing run. RESOURCE_LOCK keeps the tests from running at the same time
 # as any other test holding the same lock. COST is each test's time in seconds, about: CTest
 # starts the costliest tests first (a clean build has no record of past times), so that a
-# test of minutes does not start last, beside an idle core.
+# test of minutes does not start last, beside an idle core. THREADS sets VERITY_TEST_THREADS
+# in each test's environment, which an executable that reads it (chi2/suite/tests/
+# test_threads.cpp) takes as its cap on oneTBB's threads: for many short tests that `ctest -j`
+# already runs side by side on every core, where more threads per test only contend.
 function(verity_discover_tests target)
-  cmake_parse_arguments(ARG "" "NAME;PREFIX;FILTER;RESOURCE_LOCK;COST" "WHOLE_SUITES;LABELS"
+  cmake_parse_arguments(ARG "" "NAME;PREFIX;FILTER;RESOURCE_LOCK;COST;THREADS" "WHOLE_SUITES;LABELS"
                         ${ARGN})
   if(NOT ARG_NAME)
     set(ARG_NAME ${target})
@@ -48,6 +51,9 @@ function(verity_discover_tests target)
   endif()
   if(ARG_COST)
     string(APPEND lock " COST ${ARG_COST}")
+  endif()
+  if(ARG_THREADS)
+    string(APPEND lock " ENVIRONMENT VERITY_TEST_THREADS=${ARG_THREADS}")
   endif()
   file(WRITE ${file} "if(${ARG_NAME}_TESTS)\n"
                      "  set_tests_properties(\${${ARG_NAME}_TESTS} PROPERTIES LABELS \"${labels}\"${lock})\n"
