@@ -221,4 +221,44 @@ TEST(FrameworkQuadratureBounds, AJumpThatDipsIntoACellLeavesASliverThatIsIntegra
   EXPECT_NEAR(r.value, truth, 1e-9 * truth);
 }
 
+// A half-Gaussian lobe against an end of the range, cut to exactly 0 where it falls below
+// 10⁻²⁰ (3.4·10⁻³ from the end): every node of the Kronrod rule on the whole range (the
+// outermost 0.43% of it in) reads 0, and the piece used to be accepted as 0 with an error of 0.
+// A peer's anisotropic Beckmann conductor (α 1 × 10⁻⁴ at normal incidence, its D cut to 0
+// below 10⁻²⁰) put such a sliver of its lobe in an equal-probability cell 1.57 rad wide, which
+// then expected no sample and received 1,666 of 10⁶: a correct BSDF failed
+// (reports/peers/mitsuba3-bsdfs.md, finding 17).
+constexpr double kLobeWidth = 5e-4;
+double cutLobe(double distance) {
+  const double v = std::exp(-(distance / kLobeWidth) * (distance / kLobeWidth));
+  return v < 1e-20 ? 0.0 : v;
+}
+const double kLobeMass = kLobeWidth * std::sqrt(kPi) / 2;  // ∫₀^∞ exp(−(t/w)²) dt
+
+TEST(FrameworkQuadratureBounds, ALobeAgainstAnEndThatEveryNodeMissesIsFound) {
+  for (const bool atStart : {true, false}) {
+    const auto f = [=](double y) { return cutLobe(atStart ? y : 1 - y); };
+    double error = 0;
+    // Against an absolute tolerance, as every cell's integral is (its share of the grid's).
+    const double value = integrate1D(f, 0, 1, {}, &error, 1e-12);
+    EXPECT_NEAR(value, kLobeMass, std::max(error, 1e-15)) << (atStart ? "at 0" : "at 1");
+    // Found, not merely bounded: the halves keep the whole depth for the lobe (without a
+    // pilot value to be relative to, every piece goes to that depth; 2.5·10⁻⁴ here).
+    EXPECT_NEAR(value, kLobeMass, 1e-3 * kLobeMass) << (atStart ? "at 0" : "at 1");
+  }
+}
+
+// The same in the outer integral: a band against the rectangle's edge x = 0, where every
+// outer node's inner integral is 0 and the inner integral at the edge is not.
+TEST(FrameworkQuadratureBounds, ABandAgainstAnEdgeThatEveryOuterNodeMissesIsFound) {
+  const DensityFn f = [](double x, double y) { return cutLobe(x) * std::sin(kPi * y); };
+  QuadratureOptions options;
+  options.cellAbsTolerance = 1e-12;
+  const CellIntegral r =
+      integrateRectangle(f, {}, squareDomain(1), CellBounds{0, 1, 0, 1}, options);
+  const double truth = kLobeMass * 2 / kPi;
+  EXPECT_NEAR(r.value, truth, std::max(r.error, 1e-15));
+  EXPECT_NEAR(r.value, truth, 1e-3 * truth);
+}
+
 }  // namespace verity::chi2
