@@ -56,10 +56,10 @@ CellLayout parseCellLayout(const std::string& name, const std::string& option = 
 // than 32/(4n) of the mass, taken afresh at each level). Measured in evaluations, partition
 // against the cells' integrals (FrameworkPartitionCost): a cosine lobe 0.39M against 0.70M, Phong
 // 10⁴ 1.05M against 1.22M; Phong 10⁴ evaluated in float (a staircase of 6·10⁻⁴ steps) 4.4M against
-// 20.7M. What a capped refinement costs is accuracy of the edges only: where the levels or the depth
-// run out, a step holds more than 1/(4n) of the mass and the cells there are less equal, never
-// wrong, since their probabilities are integrated accurately afterwards. Where f integrates to zero
-// (or to no finite number) there is no mass to follow: the uniform grid is returned, with
+// 20.7M. What a capped refinement costs is accuracy of the edges only: where the levels or the
+// depth run out, a step holds more than 1/(4n) of the mass and the cells there are less equal,
+// never wrong, since their probabilities are integrated accurately afterwards. Where f integrates
+// to zero (or to no finite number) there is no mass to follow: the uniform grid is returned, with
 // gridReason saying so.
 Domain equalProbabilityCells(const Domain& grid, const DensityFn& f,
                              const DensityFeatures& features = {},
