@@ -2,6 +2,7 @@
 // known: PASSED only when every check ran with its stated power, INCONCLUSIVE (with its
 // reason) when one could not, FAILED on a real mismatch.
 #include <gtest/gtest.h>
+#include <verity/chi2/check_result.h>
 #include <verity/chi2/sampling_check.h>
 #include <verity/chi2/significance.h>
 
@@ -134,6 +135,22 @@ TEST(FrameworkVerdict, PerSampleDefectFailsWhateverTheQuadrature) {
   const TestResult r = run(SquareSubject(SquareSubject::Kind::NanSample));
   EXPECT_EQ(r.verdict(), Verdict::Failed) << r.report();
   EXPECT_EQ(r.inconclusiveReason(), "");
+}
+
+TEST(FrameworkVerdict, AFailureOnOtherGroundsListsNoTestTheQuadratureCouldNotVouchFor) {
+  // FAILED for a per-sample defect, with expected counts the quadrature cannot vouch for: the
+  // chi-square and pdf-integral tests did not run, so they are neither listed among the
+  // failures nor shown as failed. A family report once listed "chi-square, pdf integral" for
+  // a peer's anisotropic lobe whose cells expected 4·10⁻¹⁵ and received 580,000 samples.
+  CheckResult c;
+  c.test = run(SquareSubject(SquareSubject::Kind::HiddenSpike, 3), 100'000, CellLayout::Grid);
+  ASSERT_GT(c.test.quadratureError, c.test.integralTolerance) << c.test.report();
+  c.test.audit.record(Defect::Weight, "a made-up weight defect");
+  EXPECT_EQ(c.verdict(), Verdict::Failed);
+  const std::vector<std::string> failures = c.failures();
+  EXPECT_EQ(failures, std::vector<std::string>{defectName(Defect::Weight)});
+  EXPECT_EQ(c.report().find("[FAIL] chi-square"), std::string::npos) << c.report();
+  EXPECT_NE(c.report().find("chi-square: not run"), std::string::npos) << c.report();
 }
 
 TEST(FrameworkVerdict, SignificanceOutsideTheUnitIntervalIsRefused) {
