@@ -45,9 +45,10 @@ std::vector<std::string> CheckResult::failures() const {
   } else {
     // Tests on expected counts that the quadrature could not vouch for did not run: a verdict
     // that fails on other grounds (a per-sample defect) does not list them.
-    if (test.quadratureHolds() && !test.chiSquare.passed(test.significance))
-      out.push_back("chi-square");
-    if (test.quadratureHolds() && !test.integral.passed) out.push_back("pdf integral");
+    if (test.quadratureHolds()) {
+      if (!test.chiSquare.passed(test.significance)) out.push_back("chi-square");
+      if (!test.integral.passed) out.push_back("pdf integral");
+    }
     if (verdict() == Verdict::Inconclusive) out.push_back("inconclusive");
   }
   for (int d = 0; d < static_cast<int>(Defect::Count); ++d)

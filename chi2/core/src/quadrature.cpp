@@ -323,13 +323,14 @@ bool accepted(const Rule& r, double a, double b, double tolerancePerWidth, unsig
   return depth == 0 || r.error <= tolerancePerWidth * (b - a);
 }
 
-// A rule on [a, b] that found next to nothing, within the piece's share of the tolerance: an
-// exact 0, a tail, or a lobe that the nodes all missed, but for its tail.
-bool negligible(const Rule& r, double a, double b, double tolerancePerWidth) {
-  return std::fabs(r.value) + r.carried <= tolerancePerWidth * (b - a);
+// A rule on [a, b] that found next to nothing, within the piece's share of a tolerance that
+// has an absolute scale: an exact 0, a tail, or a lobe that the nodes all missed, but for its
+// tail. Whether it missed one, its integrand at the ends tells (atEnds, kZeroHalvings).
+bool mayHideMass(const Rule& r, double a, double b, double tolerancePerWidth) {
+  return tolerancePerWidth > 0 && std::fabs(r.value) + r.carried <= tolerancePerWidth * (b - a);
 }
 
-// How many times a piece whose rule found next to nothing (negligible) is halved towards an
+// How many times a piece whose rule found next to nothing (mayHideMass) is halved towards an
 // end where its integrand is larger than the piece's share of the tolerance per width (atEnds:
 // what would be missed if the integrand held that value over the whole piece; an integral
 // without an absolute tolerance has no such scale, and is not halved so), on top of the depth.
@@ -379,22 +380,21 @@ Task<typename Integrand::Result> bisect(Density& d, const Integrand& f, double a
   const double ratio = std::min(e0, e1) / std::max(e0, e1);
   const bool noise = stalled && (ratio > 0.25 || (parentStalled && ratio > 0.05));
   if (noise) co_return Result::noise(std::move(halves[0]), std::move(halves[1]), a, b);
-  bool done0 = accepted(r0, a, m, tolerancePerWidth, depth - 1),
-       done1 = accepted(r1, m, b, tolerancePerWidth, depth - 1);
+  const bool accepted0 = accepted(r0, a, m, tolerancePerWidth, depth - 1),
+             accepted1 = accepted(r1, m, b, tolerancePerWidth, depth - 1);
   // A half that found next to nothing, with mass at an end, is halved again, its depth kept
   // (kZeroHalvings).
-  unsigned depth0 = depth - 1, depth1 = depth - 1;
+  bool towards0 = false, towards1 = false;
   if constexpr (kHalvesTowardsMass<Result>)
-    if (zeroHalvings < kZeroHalvings && tolerancePerWidth > 0) {
-      if (done0 && negligible(r0, a, m, tolerancePerWidth) &&
-          co_await f.atEnds(a, m) > tolerancePerWidth)
-        done0 = false, depth0 = depth;
-      if (done1 && negligible(r1, m, b, tolerancePerWidth) &&
-          co_await f.atEnds(m, b) > tolerancePerWidth)
-        done1 = false, depth1 = depth;
+    if (zeroHalvings < kZeroHalvings) {
+      towards0 = accepted0 && mayHideMass(r0, a, m, tolerancePerWidth) &&
+                 co_await f.atEnds(a, m) > tolerancePerWidth;
+      towards1 = accepted1 && mayHideMass(r1, m, b, tolerancePerWidth) &&
+                 co_await f.atEnds(m, b) > tolerancePerWidth;
     }
-  const unsigned halvings0 = depth0 == depth ? zeroHalvings + 1 : zeroHalvings,
-                 halvings1 = depth1 == depth ? zeroHalvings + 1 : zeroHalvings;
+  const bool done0 = accepted0 && !towards0, done1 = accepted1 && !towards1;
+  const unsigned depth0 = towards0 ? depth : depth - 1, depth1 = towards1 ? depth : depth - 1;
+  const unsigned halvings0 = zeroHalvings + towards0, halvings1 = zeroHalvings + towards1;
   std::array<Result, 2> p;
   if (done0) p[0] = Result::leaf(std::move(halves[0]), a, m);
   if (done1) p[1] = Result::leaf(std::move(halves[1]), m, b);
@@ -423,7 +423,7 @@ Task<typename Integrand::Result> adaptive(Density& d, const Integrand& f, double
   // Nodes that found next to nothing prove nothing where the integrand is more than that at an
   // end: halve towards it, keeping the whole depth for what the halves find.
   if constexpr (kHalvesTowardsMass<Result>)
-    if (negligible(whole, a, b, perWidth) && perWidth > 0 && co_await f.atEnds(a, b) > perWidth)
+    if (mayHideMass(whole, a, b, perWidth) && co_await f.atEnds(a, b) > perWidth)
       co_return co_await bisect(d, f, a, b, whole, perWidth, options.maxDepth + 1, false, 1);
   co_return Result::leaf(std::move(first[0]), a, b);
 }

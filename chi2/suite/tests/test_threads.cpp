@@ -1,14 +1,13 @@
 // VERITY_TEST_THREADS=n caps oneTBB at n threads for the whole process. CTest sets it to 1
-// for the sweep's configurations (chi2/suite/CMakeLists.txt): `ctest -j` already runs one of
-// them on every core, and two threads per test on a 2-core machine only contend (a sample of
-// the sweep ran 3 to 5% faster so). A check's result does not depend on its threads
-// (chi2.ThreadCount), so the cap changes only the time.
+// for every test of this executable (chi2/suite/CMakeLists.txt): `ctest -j` already runs one
+// of them on every core, and two threads per test on a 2-core machine only contend (a sample
+// of the sweep's configurations ran 3 to 5% faster so). A check's result does not depend on its
+// threads (chi2.ThreadCount), so the cap changes only the time.
 #include <tbb/global_control.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
-#include <string>
 
 namespace {
 
