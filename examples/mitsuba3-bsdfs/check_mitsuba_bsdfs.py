@@ -57,10 +57,18 @@ class Adapter:
         self.delta_bits = int(mi.BSDFFlags.Delta)
 
     # -- helpers
+    def _float(self, x):
+        """A 1-D array as a Dr.Jit Float. Dr.Jit (v3.8.0, LLVM backend) maps a contiguous
+        float32 array without copying, and its kernels load whole vectors of 16 floats: up to 15
+        past the array's end, a segmentation fault where the array ends at the end of mapped
+        memory (the report's limit 6; repro/drjit-overread.py). So it is given the head of a
+        copy padded by 16."""
+        padded = np.zeros(len(x) + 16, dtype=np.float32)
+        padded[:len(x)] = x
+        return self.mi.Float(padded[:len(x)])
+
     def _vec(self, a):
-        mi = self.mi
-        a = np.ascontiguousarray(a, dtype=np.float32)
-        return mi.Vector3f(mi.Float(a[:, 0]), mi.Float(a[:, 1]), mi.Float(a[:, 2]))
+        return self.mi.Vector3f(self._float(a[:, 0]), self._float(a[:, 1]), self._float(a[:, 2]))
 
     def _si(self, wi, n):
         mi, dr = self.mi, self.dr
@@ -87,8 +95,8 @@ class Adapter:
             return self._sample_scalar(wi, u)
         mi = self.mi
         si = self._si(wi, n)
-        bs, weight = self.bsdf.sample(self.ctx, si, mi.Float(u[:, 0]),
-                                      mi.Point2f(mi.Float(u[:, 1]), mi.Float(u[:, 2])))
+        bs, weight = self.bsdf.sample(self.ctx, si, self._float(u[:, 0]),
+                                      mi.Point2f(self._float(u[:, 1]), self._float(u[:, 2])))
         wo = self._np3(bs.wo, n)
         w = self._np3(weight, n)
         pdf = self._np(bs.pdf, n)
@@ -401,6 +409,9 @@ def parse_args(argv, names):
                            "distribution (default 0.02,0.25)")
     size.add_argument("--samples", type=int, metavar="N",
                       help="draw N samples in each check instead of sizing it by --detect")
+    p.add_argument("--max-samples", type=int, metavar="N",
+                   help="with --detect: the most samples a check may draw; one whose target "
+                        "needs more is never PASSED (Verity's default, 100000000)")
     p.add_argument("--delta-samples", type=int, default=100_000, metavar="N",
                    help="samples of each check of a family with only delta lobes, where "
                         "--detect has no histogram to size (100000)")
@@ -438,6 +449,8 @@ def parse_args(argv, names):
         if not (0 < eps < 1 and 0 < mass <= 0.5):
             fail(f"--detect {a.detect}: EPS must lie in (0, 1) and MASS in (0, 0.5]")
         a.detect = (eps, mass)
+    if a.max_samples is not None and (a.samples is not None or a.max_samples < 1000):
+        fail(f"--max-samples {a.max_samples}: give at least 1000, and not with --samples")
     if a.samples is not None and a.samples < 1000:
         fail(f"--samples {a.samples}: give at least 1000")
     if a.delta_samples < 1000:
@@ -549,6 +562,8 @@ def main(argv=None):
             kw["samples"] = args.samples
         elif args.detect is not None:
             kw["detect"] = args.detect
+        if args.max_samples is not None and not fam.delta_only:
+            kw["max_samples"] = args.max_samples
         print(f"== {fam.name}: {fam.plugin}, {fam.describe}", flush=True)
         t0, c0 = time.perf_counter(), time.process_time()
         r = verity.check_bsdf_family(factory, fam.params, **kw)
@@ -571,7 +586,9 @@ def main(argv=None):
                          inconclusive=verdicts.count("INCONCLUSIVE"), verdict=r.verdict,
                          wall_s=wall, cpu_s=cpu, samples=sum(c["result"].samples for c in confs),
                          sizing=("samples %d" % kw["samples"]) if "samples" in kw else
-                         "detect %g over %g" % (kw.get("detect") or (0.02, 0.25)),
+                         "detect %g over %g" % (kw.get("detect") or (0.02, 0.25))
+                         + (", at most %d samples" % kw["max_samples"]
+                            if "max_samples" in kw else ""),
                          interior_points=args.interior_points))
         if stated:
             rows[-1]["stated_lobes"] = len(stated)
