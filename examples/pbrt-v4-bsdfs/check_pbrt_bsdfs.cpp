@@ -3,7 +3,7 @@
 // sized to find a 2% density error over 1/4 of the mass.
 //
 //   check_pbrt_bsdfs [--only NAME]... [--interior-points N] [--tolerance T]
-//                    [--stochastic-samples N] [--max-depth N] [--output DIR]
+//                    [--max-samples N] [--stochastic-samples N] [--max-depth N] [--output DIR]
 //
 // prints each family's report, writes DIR/NAME.md, .json and .txt and the figure data of every
 // configuration that did not pass (DIR/NAME-K.json; plot_chi2.py draws it), and a Markdown
@@ -33,7 +33,8 @@ namespace {
 struct Arguments {
   std::set<std::string> only;
   int interiorPoints = 4;
-  double tolerance = 0;  // 0: the check's defaults
+  double tolerance = 0;      // 0: the check's defaults
+  long long maxSamples = 0;  // 0: the check's default budget
   long long stochasticSamples = 400'000;
   int maxDepth = 10;
   std::filesystem::path output = "pbrt-v4-bsdfs";
@@ -66,6 +67,11 @@ Arguments parse(int argc, char** argv) {
     } else if (option == "--tolerance") {
       a.tolerance = number(option, value);
       if (!(a.tolerance > 0 && a.tolerance < 1)) badArgument(option + ": expected (0, 1)");
+    } else if (option == "--max-samples") {
+      const double n = number(option, value);
+      if (n < 1000 || n != static_cast<long long>(n))
+        badArgument(option + ": expected a count >= 1000");
+      a.maxSamples = static_cast<long long>(n);
     } else if (option == "--stochastic-samples") {
       const double n = number(option, value);
       if (n < 2 || n != static_cast<long long>(n)) badArgument(option + ": expected a count >= 2");
@@ -152,6 +158,9 @@ int main(int argc, char** argv) {
       options.check.weightTolerance = args.tolerance;
       options.check.reciprocityTolerance = args.tolerance;
     }
+    // A check whose target needs more is never PASSED; the budget bounds what it draws to learn
+    // that (a lobe the quadrature cannot follow needs more samples than any budget).
+    if (args.maxSamples > 0) options.check.maxSamples = args.maxSamples;
     verity::chi2::CheckProgress progress;
     options.check.progress = &progress;
     const auto start = std::chrono::steady_clock::now();
