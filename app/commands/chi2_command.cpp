@@ -108,6 +108,14 @@ void printResult(const chi2::TestResult& r, const Chi2Args& a) {
       "  level {:.3g} per test: Sidak over this run's {} statistical tests for a family-wise "
       "level of {} (--alpha)\n",
       r.significance, chi2::kStatisticalTestsPerCheck, a.alpha);
+  // Only the statistical tests failed, which a correct material does at the level's rate: say
+  // so, since that is not yet a defect.
+  if (r.verdict() == chi2::Verdict::Failed && r.outside == 0 && r.audit.clean())
+    std::cout << fmt::format(
+        "  only the statistical tests failed, which a correct material does with probability "
+        "{} (--alpha): rerun with another --seed, and more --samples, to tell chance from a "
+        "defect\n",
+        a.alpha);
 }
 
 // The material --material describes; its errors name the option and the JSON path in it.

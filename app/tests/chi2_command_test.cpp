@@ -110,6 +110,22 @@ TEST(Chi2Command, APassStatesWhatItCouldHaveCaught) {
       << r.stdoutText;
 }
 
+// A failure of the statistical tests alone says that a correct material fails so at the level's
+// rate. At --alpha 0.999 a correct Lambertian fails one of its two tests with probability 0.999
+// (any seed but one in a thousand; --power must then exceed the per-test level of 0.968), and
+// its samples agree with eval and pdf one by one.
+TEST(Chi2Command, AStatisticalFailureSaysHowOftenACorrectMaterialFails) {
+  const std::string hint = "only the statistical tests failed, which a correct material does";
+  const Printed failed = printed({"--material", R"({"type":"lambertian"})", "--samples", "200000",
+                                  "--alpha", "0.999", "--power", "0.99"});
+  EXPECT_EQ(failed.status, 1) << failed.stdoutText << failed.stderrText;
+  EXPECT_NE(failed.stdoutText.find(hint + " with probability 0.999 (--alpha)"), std::string::npos)
+      << failed.stdoutText;
+  const Printed passed = printed({"--material", R"({"type":"lambertian"})", "--samples", "200000"});
+  EXPECT_EQ(passed.status, 0) << passed.stderrText;
+  EXPECT_EQ(passed.stdoutText.find(hint), std::string::npos) << passed.stdoutText;
+}
+
 // --threads, as the rendering commands have it (cli/threads_option.h): one thread runs the
 // check to its verdict, and a negative count is refused by name.
 TEST(Chi2Command, ThreadsAreTheRenderCommandsOption) {
