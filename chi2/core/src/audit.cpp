@@ -1,6 +1,7 @@
 #include <fmt/format.h>
 #include <verity/chi2/audit.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -23,6 +24,15 @@ bool relativelyClose(double a, double b, double rel) {
 double ratioDeviation(double a, double b) {
   if (b == 0) return a == 0 ? 0 : std::numeric_limits<double>::infinity();
   return std::fabs(a / b - 1);
+}
+
+double factorDeviation(double a, double b) {
+  return std::max(ratioDeviation(a, b), ratioDeviation(b, a));
+}
+
+double deviationWithinFactor(double ratio, double spread) {
+  if (ratio >= 1 || std::isinf(spread)) return spread;
+  return spread / (1 + spread);
 }
 
 void Audit::record(Defect d, const std::string& example) {

@@ -185,7 +185,7 @@ double BsdfModelSubject::roundingSpread(const Vector3d& wo, Q&& q) const {
   const double reference = q(wo);
   double spread = 0;
   const auto probe = [&](const Vector3d& w) {
-    spread = std::max(spread, ratioDeviation(q(w), reference));
+    spread = std::max(spread, factorDeviation(q(w), reference));
   };
   Vector3d step;
   for (int k = 0; k < 3; ++k) step[k] = roundingOf(wo[k], setup_.directionRounding);
@@ -262,7 +262,11 @@ std::optional<Point2d> BsdfModelSubject::audited(const BsdfUniforms& u,
       const double deviation = ratioDeviation(s->pdf, p);
       audit.recordClassifying(
           Defect::SamplePdf, deviation,
-          [&] { return roundingSpread(wo, [&](const Vector3d& w) { return model_.pdf(wi, w); }); },
+          [&] {
+            return deviationWithinFactor(s->pdf / p, roundingSpread(wo, [&](const Vector3d& w) {
+                                           return model_.pdf(wi, w);
+                                         }));
+          },
           fmt::format("sample pdf {} vs pdf() {} (ratio {:.6f}, tolerance {:g}) at {}", s->pdf, p,
                       s->pdf / p, tolerance, at()));
     }
@@ -290,7 +294,11 @@ std::optional<Point2d> BsdfModelSubject::audited(const BsdfUniforms& u,
         return pw > 0 ? model_.eval(wi, w)[worst] * std::fabs(w.z()) / pw : 0.0;
       };
       audit.recordClassifying(
-          Defect::Weight, deviation, [&] { return roundingSpread(wo, weightAt); },
+          Defect::Weight, deviation,
+          [&] {
+            return deviationWithinFactor(s->weight[worst] / expected[worst],
+                                         roundingSpread(wo, weightAt));
+          },
           fmt::format("weight {} vs eval*|cos|/pdf {} ({}ratio {:.6f}, "
                       "tolerance {:g}) at {}",
                       format(s->weight), format(expected), component(worst),
@@ -310,7 +318,7 @@ void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd
   const double etaI = indexOn(wi), etaO = indexOn(wo);
   const double tolerance = setup_.reciprocityTolerance;
   // The worst component of either comparison, where any is beyond the tolerance.
-  double worst = -1;
+  double worst = -1, worstRatio = 1;
   int worstComponent = 0;
   bool adjoint = false;  // the worst is evalAdjoint's, else eval(wi, wo)'s
   std::string example;
@@ -318,6 +326,7 @@ void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd
     const double a = f[c] * etaO * etaO, b = fr[c] * etaI * etaI;
     if (!relativelyClose(a, b, tolerance) && ratioDeviation(a, b) > worst) {
       worst = ratioDeviation(a, b);
+      worstRatio = a / b;
       worstComponent = c;
       adjoint = false;
       example = fmt::format(
@@ -327,6 +336,7 @@ void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd
     }
     if (!relativelyClose(fi[c], fr[c], tolerance) && ratioDeviation(fi[c], fr[c]) > worst) {
       worst = ratioDeviation(fi[c], fr[c]);
+      worstRatio = fi[c] / fr[c];
       worstComponent = c;
       adjoint = true;
       example = fmt::format(
@@ -347,7 +357,7 @@ void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd
         });
         const double backward =
             roundingSpread(wo, [&](const Vector3d& w) { return model_.eval(w, wi)[c]; });
-        return std::max(forward, backward);
+        return deviationWithinFactor(worstRatio, std::max(forward, backward));
       },
       example);
 }

@@ -4,7 +4,9 @@
 // few 10⁻⁴ (float rounding) fails at the defaults with that worst, passes with a tolerance
 // set to 10⁻³ or 10⁻², and reads apart from a bug (a worst of 0.5). A narrow lobe whose pdf()
 // takes sin²θ as 1 − cos²θ in single precision fails within what rounding the direction gives
-// there, and one whose pdf() is 2% off fails beyond it.
+// there, and one whose pdf() is 2% off fails beyond it. A ring whose pdf() reads cos θo
+// rounded off its peak fails within rounding too, its sample's density up to 7.4 times pdf():
+// rounding that only lowers a reference explains a ratio above 1 as well as below.
 //
 // Level: kCorrectChecks checks of two statistical tests each must pass, at a family-wise level
 // of 1% with Šidák's correction; those that must fail use the same level.
@@ -110,6 +112,38 @@ BsdfModel narrowLobe(LobePdf kind, double a) {
       pdf);
 }
 
+// A ring of directions about cos θo = z*, halfway between the floats 0.75 and 0.75 + 2⁻²⁴,
+// Gaussian in cos θo with σ a quarter of that spacing and uniform in φ (the sphere's area
+// element is d(cos θ) dφ): p = g(cos θo) / 2π. sample() returns the exact density of its
+// direction; pdf() reads cos θo in float, on the grid 2σ from the peak, so that it is up to
+// e² = 7.4 times lower than the sample's, and every move of wo by its rounding (16σ or more)
+// lowers it further. The weight agrees with eval·|cos|/pdf(), so only the sample pdf fails.
+BsdfModel ringOffTheFloatGrid() {
+  const double spacing = std::ldexp(1.0, -24), zPeak = 0.75 + spacing / 2, sigma = spacing / 4;
+  const auto g = [=](double z) {
+    const double t = (z - zPeak) / sigma;
+    return std::exp(-0.5 * t * t) / (sigma * std::sqrt(2 * std::numbers::pi));
+  };
+  const auto pdfFloat = [=](const Vec3&, const Vec3& wo) {
+    return g(static_cast<float>(wo.z)) / (2 * std::numbers::pi);
+  };
+  return bsdfModel<Vec3>(
+      [=](const Vec3& wi, const BsdfUniforms& u) -> std::optional<SampledDirection<Vec3, double>> {
+        if (wi.z <= 0) return std::nullopt;
+        // Box–Muller for cos θo, u.lobe for φ.
+        const double n =
+            std::sqrt(-2 * std::log(1 - u.xy.x)) * std::cos(2 * std::numbers::pi * u.xy.y);
+        const double z = zPeak + sigma * n, r = std::sqrt(1 - z * z);
+        const double phi = 2 * std::numbers::pi * u.lobe;
+        const Vec3 wo{r * std::cos(phi), r * std::sin(phi), z};
+        return SampledDirection<Vec3, double>{wo, kAlbedo, g(z) / (2 * std::numbers::pi)};
+      },
+      [=](const Vec3& wi, const Vec3& wo) {
+        return wo.z > 0 ? kAlbedo * pdfFloat(wi, wo) / wo.z : 0.0;
+      },
+      pdfFloat);
+}
+
 }  // namespace
 
 TEST(PerSampleTolerance, DefaultsAreThoseOfTheSuite) {
@@ -202,6 +236,12 @@ TEST(PerSampleTolerance, TheAuditKeepsTheWorstDeviationAcrossMerges) {
   EXPECT_NE(a.describe().find("worst |ratio - 1| = 0.5: worst"), std::string::npos) << a.describe();
   EXPECT_EQ(ratioDeviation(0, 0), 0);
   EXPECT_EQ(ratioDeviation(1, 0), std::numeric_limits<double>::infinity());
+  EXPECT_DOUBLE_EQ(factorDeviation(1, 7.8), 6.8);
+  EXPECT_DOUBLE_EQ(factorDeviation(7.8, 1), 6.8);
+  EXPECT_EQ(factorDeviation(0, 1), std::numeric_limits<double>::infinity());
+  // A factor of 7.8 either way reaches a ratio of 7.8 (|r − 1| = 6.8) and one of 1/7.8.
+  EXPECT_DOUBLE_EQ(deviationWithinFactor(7.8, 6.8), 6.8);
+  EXPECT_DOUBLE_EQ(deviationWithinFactor(1 / 7.8, 6.8), 1 - 1 / 7.8);
 }
 
 // The same failed comparison, told apart by its cause: the float cancellation is within what
@@ -235,6 +275,28 @@ TEST(PerSampleTolerance, RoundingThroughAnIllConditionedFormulaReadsApartFromABu
   EXPECT_EQ(b.beyondRounding(Defect::SamplePdf), b.classified(Defect::SamplePdf)) << failed(bug);
   EXPECT_NEAR(b.worstBeyondRounding(Defect::SamplePdf), 0.02 / 1.02, 1e-6) << failed(bug);
   EXPECT_FALSE(b.onlyRounding());
+}
+
+// Rounding that lowers a reference explains a ratio above 1 as well as one below: pdf() read at
+// cos θo rounded off a narrow ring's peak is up to 7.4 times below the sample's exact density,
+// and every move of wo by its rounding lowers it further. Measured as |ratio − 1| those moves
+// reached no more than 1 (a reference lowered to nothing), so every ratio above 2 was called
+// beyond rounding (Mitsuba 3's GGX at exactly 90°, whose half vector rests on the last bit of
+// wo.x, read so: reports/peers/mitsuba3-bsdfs.md, finding 4).
+TEST(PerSampleTolerance, RoundingThatLowersTheReferenceExplainsARatioAboveOne) {
+  BsdfCheckOptions o;
+  o.name = "tolerance ring off the float grid";
+  o.significance = kLevel;
+  o.samples = kSamples;
+  o.checkReciprocity = false;  // eval does not depend on wi
+  const CheckResult r = checkBsdf(ringOffTheFloatGrid(), Vec3{0, 0, 1}, o);
+  const Audit& a = r.test.audit;
+  EXPECT_GT(a.count(Defect::SamplePdf), kSamples / 10) << failed(r);
+  EXPECT_GT(a.worst(Defect::SamplePdf), 5) << failed(r);
+  EXPECT_EQ(a.count(Defect::Weight), 0) << failed(r);
+  EXPECT_GE(a.classified(Defect::SamplePdf), kClassifiedPerAudit) << failed(r);
+  EXPECT_EQ(a.beyondRounding(Defect::SamplePdf), 0) << failed(r);
+  EXPECT_TRUE(a.onlyRounding()) << failed(r);
 }
 
 }  // namespace verity::chi2::per_sample_tolerance_test

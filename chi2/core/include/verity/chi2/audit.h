@@ -48,6 +48,16 @@ bool relativelyClose(double a, double b, double rel);
 // |a/b − 1|, the deviation of a from its reference b: 0 where both are 0, +∞ where only b is.
 double ratioDeviation(double a, double b);
 
+// max(a/b, b/a) − 1: how far apart a and b are as a factor, whichever is the larger; 0 where
+// both are 0, +∞ where only one is.
+double factorDeviation(double a, double b);
+
+// The largest |r − 1| of a ratio r on the side of 1 that r lies on, for a reference that
+// rounding moves by a factor of up to 1 + spread either way: spread where r ≥ 1, and
+// spread / (1 + spread) where r < 1 (a reference rounding may have lowered 7.8 times explains a
+// ratio of 7.8 as well as one of 1/7.8).
+double deviationWithinFactor(double ratio, double spread);
+
 class Audit {
  public:
   void record(Defect d, const std::string& example);

@@ -92,10 +92,14 @@ class BsdfModelSubject : public Subject {
   template <class Where>
   bool sized(const Eigen::ArrayXd& v, const char* what, Where where, Audit& audit) const;
   std::string format(const Eigen::ArrayXd& value) const;
-  // The largest |q(w')/q(wo) − 1| over directions w' near wo whose components are moved by
-  // their rounding (directionRounding scaled to each component's magnitude): all three at once,
-  // and one at a time with the direction kept unit. How far rounding the sampled direction
-  // alone moves the reference q of a failed comparison (Audit::record).
+  // The largest factorDeviation(q(w'), q(wo)) over directions w' near wo whose components are
+  // moved by their rounding (directionRounding scaled to each component's magnitude): all
+  // three at once, and one at a time with the direction kept unit. How far, as a factor either
+  // way, rounding the sampled direction alone moves the reference q of a failed comparison
+  // (deviationWithinFactor turns it into the bound Audit::record takes). A factor either way:
+  // where the reference sits at a peak that rounding missed (a half vector whose cancelled
+  // component rests on the last bit of wo), every move lowers it further, and it may as well
+  // lie that far below the value an exact evaluation gives.
   template <class Q>
   double roundingSpread(const Vector3d& wo, Q&& q) const;
   // "component c " where the BSDF has several, for an example.
