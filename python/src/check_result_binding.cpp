@@ -79,7 +79,7 @@ void bindCheckResult(py::module_& m) {
           },
           "{defect name: {'count', 'first_example', 'worst_example'}} for each defect found; a "
           "comparison (weight, sample pdf, reciprocity) adds 'classified', 'beyond_rounding' (how "
-          "many of those classified rounding the sampled direction does not explain) and the "
+          "many of those classified rounding the directions do not explain) and the "
           "worst of those")
       .def_property_readonly(
           "compared_samples",

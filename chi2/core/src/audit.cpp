@@ -108,7 +108,7 @@ std::string Audit::describe() const {
                                ? fmt::format("{}", counts_[i])
                                : fmt::format("{} classified (of {})", classified_[i], counts_[i]);
     if (beyond_[i] == 0)
-      s += fmt::format("\n      all {} within what rounding the sampled direction gives there", of);
+      s += fmt::format("\n      all {} within what rounding the directions give there", of);
     else
       s += fmt::format(
           "\n      {} of {} beyond what rounding gives there, the worst |ratio - 1| = "

@@ -182,19 +182,24 @@ double roundingOf(double v, double directionRounding) {
 
 template <class Q>
 double BsdfModelSubject::roundingSpread(const Vector3d& wo, Q&& q) const {
-  const double reference = q(wo);
+  const Vector3d& wi = setup_.wi;
+  const double reference = q(wi, wo);
   double spread = 0;
-  const auto probe = [&](const Vector3d& w) {
-    spread = std::max(spread, factorDeviation(q(w), reference));
+  const auto probe = [&](const Vector3d& i, const Vector3d& o) {
+    spread = std::max(spread, factorDeviation(q(i, o), reference));
   };
-  Vector3d step;
+  Vector3d step, stepI;
   for (int k = 0; k < 3; ++k) step[k] = roundingOf(wo[k], setup_.directionRounding);
+  for (int k = 0; k < 3; ++k) stepI[k] = roundingOf(wi[k], setup_.directionRounding);
   // Every component moved by its rounding, not renormalised: a direction rounded to float is
-  // unit only to its rounding.
+  // unit only to its rounding. wi too: a quantity of wi alone (a lobe's probability, a
+  // Fresnel factor at a critical angle) rounds as much as one of wo.
   for (int signs = 0; signs < 8; ++signs) {
-    Vector3d w = wo;
+    Vector3d w = wo, i = wi;
     for (int k = 0; k < 3; ++k) w[k] += (signs >> k & 1 ? 1 : -1) * step[k];
-    probe(w);
+    for (int k = 0; k < 3; ++k) i[k] += (signs >> k & 1 ? 1 : -1) * stepI[k];
+    probe(wi, w);
+    probe(i, wo);
   }
   // One component moved by its rounding and the direction kept unit, the others scaled to
   // match: a BSDF that renormalises a vector made from wo (a half vector) rounds that vector's
@@ -207,7 +212,7 @@ double BsdfModelSubject::roundingSpread(const Vector3d& wo, Q&& q) const {
       if (step[k] == 0 || rest <= 0) continue;
       Vector3d w = wo * std::sqrt(std::max(0.0, 1 - moved * moved) / rest);
       w[k] = moved;
-      probe(w);
+      probe(wi, w);
     }
   return spread;
 }
@@ -263,9 +268,10 @@ std::optional<Point2d> BsdfModelSubject::audited(const BsdfUniforms& u,
       audit.recordClassifying(
           Defect::SamplePdf, deviation,
           [&] {
-            return deviationWithinFactor(s->pdf / p, roundingSpread(wo, [&](const Vector3d& w) {
-                                           return model_.pdf(wi, w);
-                                         }));
+            return deviationWithinFactor(
+                s->pdf / p, roundingSpread(wo, [&](const Vector3d& i, const Vector3d& o) {
+                  return model_.pdf(i, o);
+                }));
           },
           fmt::format("sample pdf {} vs pdf() {} (ratio {:.6f}, tolerance {:g}) at {}", s->pdf, p,
                       s->pdf / p, tolerance, at()));
@@ -289,9 +295,9 @@ std::optional<Point2d> BsdfModelSubject::audited(const BsdfUniforms& u,
     if (worst >= 0) {
       Eigen::ArrayXd expected(f.size());
       for (int c = 0; c < f.size(); ++c) expected[c] = expectedAt(c);
-      const auto weightAt = [&](const Vector3d& w) {
-        const double pw = model_.pdf(wi, w);
-        return pw > 0 ? model_.eval(wi, w)[worst] * std::fabs(w.z()) / pw : 0.0;
+      const auto weightAt = [&](const Vector3d& i, const Vector3d& w) {
+        const double pw = model_.pdf(i, w);
+        return pw > 0 ? model_.eval(i, w)[worst] * std::fabs(w.z()) / pw : 0.0;
       };
       audit.recordClassifying(
           Defect::Weight, deviation,
@@ -351,12 +357,11 @@ void BsdfModelSubject::checkReciprocity(const Vector3d& wo, const Eigen::ArrayXd
   audit.recordClassifying(
       Defect::Reciprocity, worst,
       [&] {
-        const double forward = roundingSpread(wo, [&](const Vector3d& w) {
-          return adjoint && model_.evalAdjoint ? model_.evalAdjoint(wi, w)[c]
-                                               : model_.eval(wi, w)[c];
+        const double forward = roundingSpread(wo, [&](const Vector3d& i, const Vector3d& w) {
+          return adjoint && model_.evalAdjoint ? model_.evalAdjoint(i, w)[c] : model_.eval(i, w)[c];
         });
-        const double backward =
-            roundingSpread(wo, [&](const Vector3d& w) { return model_.eval(w, wi)[c]; });
+        const double backward = roundingSpread(
+            wo, [&](const Vector3d& i, const Vector3d& w) { return model_.eval(w, i)[c]; });
         return deviationWithinFactor(worstRatio, std::max(forward, backward));
       },
       example);

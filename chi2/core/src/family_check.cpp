@@ -82,8 +82,8 @@ std::string configurationName(const std::vector<FamilyParameter>& parameters,
   return s + fmt::format(" at {:g}° from {}", incidence, below ? "below" : "above");
 }
 
-// The worst per-sample defect: a comparison beyond what rounding the sampled direction gives
-// where there is one, else the comparison furthest from its reference (within rounding), else
+// The worst per-sample defect: a comparison beyond what rounding the directions gives where
+// there is one, else the comparison furthest from its reference (within rounding), else
 // the first defect's first example.
 std::string worstDefect(const Audit& audit) {
   std::string out;
@@ -110,7 +110,7 @@ std::string worstDefect(const Audit& audit) {
 }
 
 // A configuration that failed on per-sample comparisons alone, each within what rounding the
-// sampled direction gives there.
+// directions give there.
 bool failedOnlyByRounding(const CheckResult& c) {
   if (c.verdict() != Verdict::Failed || !c.test.audit.onlyRounding()) return false;
   for (const std::string& f : c.failures())

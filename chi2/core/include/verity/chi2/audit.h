@@ -3,7 +3,7 @@
 // pdf(), a reciprocity violation, a sampled direction that is not a unit vector, a value of
 // the wrong size. Each kind keeps a count and its first example; the three comparisons keep
 // their worst |ratio − 1| too, with its example, and tell rounding from a bug: a failed
-// comparison may come with the |ratio − 1| that rounding the sampled direction alone gives its
+// comparison may come with the |ratio − 1| that rounding the directions alone gives its
 // reference there (the reference's condition: a microfacet density from 1 − cos²θ near the
 // normal, a Fresnel factor at its critical angle), and one beyond that is "beyond rounding".
 // Measuring that costs 8 to 16 more evaluations, so a caller classifies the first few of each

@@ -125,9 +125,9 @@ struct BsdfCheckOptions : CheckOptions {
   double reciprocityTolerance = kReciprocityTolerance;  // eval(wi,wo) against eval(wo,wi)
   // How far rounding may move a component of a sampled direction in [0.5, 1), scaled to each
   // component's magnitude (by default 4 units in the last place of a float; 4·2⁻⁵³ for a BSDF
-  // in double). A failed comparison is "within rounding" where moving wo's components this far
-  // moves its reference as far: the report then says so, and a family's table counts it apart
-  // (Audit::onlyRounding).
+  // in double). A failed comparison is "within rounding" where moving wo's or wi's components
+  // this far moves its reference as far, as a factor either way: the report then says so, and a
+  // family's table counts it apart (Audit::onlyRounding).
   double directionRounding = kDirectionRounding;
 };
 

@@ -92,11 +92,12 @@ class BsdfModelSubject : public Subject {
   template <class Where>
   bool sized(const Eigen::ArrayXd& v, const char* what, Where where, Audit& audit) const;
   std::string format(const Eigen::ArrayXd& value) const;
-  // The largest factorDeviation(q(w'), q(wo)) over directions w' near wo whose components are
-  // moved by their rounding (directionRounding scaled to each component's magnitude): all
-  // three at once, and one at a time with the direction kept unit. How far, as a factor either
-  // way, rounding the sampled direction alone moves the reference q of a failed comparison
-  // (deviationWithinFactor turns it into the bound Audit::record takes). A factor either way:
+  // The largest factorDeviation(q(wi', wo'), q(wi, wo)) over directions near wo whose
+  // components are moved by their rounding (directionRounding scaled to each component's
+  // magnitude), all three at once and one at a time with the direction kept unit, and over
+  // directions near wi moved all three at once. How far, as a factor either way, rounding the
+  // directions moves the reference q of a failed comparison (deviationWithinFactor turns it
+  // into the bound Audit::record takes). A factor either way:
   // where the reference sits at a peak that rounding missed (a half vector whose cancelled
   // component rests on the last bit of wo), every move lowers it further, and it may as well
   // lie that far below the value an exact evaluation gives.

@@ -94,7 +94,7 @@ struct FamilyResult {
   Verdict verdictOf(size_t configuration) const;
   int count(Verdict verdict) const;
   // The configurations that failed on per-sample comparisons alone (weight, sample pdf,
-  // reciprocity), each within what rounding the sampled direction gives there
+  // reciprocity), each within what rounding the directions give there
   // (BsdfCheckOptions::directionRounding): "FAILED (rounding)" in the reports.
   int failedOnlyByRounding() const;
   // PASSED only when every configuration passed; FAILED when any failed; else INCONCLUSIVE.
