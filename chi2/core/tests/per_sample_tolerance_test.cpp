@@ -71,6 +71,17 @@ CheckResult check(Error error, double size, const std::string& name,
   return checkBsdf(lambert(error, size), Vec3{std::sin(t), 0, std::cos(t)}, o);
 }
 
+// The options of a check of a lobe that is not reciprocal by construction (its eval ignores wi,
+// or reads a function of wi alone), so that reciprocity is not checked.
+BsdfCheckOptions withoutReciprocity(const std::string& name) {
+  BsdfCheckOptions o;
+  o.name = "tolerance " + name;
+  o.significance = kLevel;
+  o.samples = kSamples;
+  o.checkReciprocity = false;
+  return o;
+}
+
 BsdfCheckOptions weightTolerance(double t) {
   BsdfCheckOptions o;
   o.weightTolerance = t;
@@ -280,11 +291,7 @@ TEST(PerSampleTolerance, TheAuditKeepsTheWorstDeviationAcrossMerges) {
 // the 2% error of a wider lobe is beyond it, at every sample classified (the first
 // kClassifiedPerAudit of each chunk's audit and every new worst).
 TEST(PerSampleTolerance, RoundingThroughAnIllConditionedFormulaReadsApartFromABug) {
-  BsdfCheckOptions o;
-  o.name = "tolerance narrow lobe";
-  o.significance = kLevel;
-  o.samples = kSamples;
-  o.checkReciprocity = false;  // eval does not depend on wi
+  const BsdfCheckOptions o = withoutReciprocity("narrow lobe");
   const CheckResult rounding =
       checkBsdf(narrowLobe(LobePdf::FloatCancellation, 1e-3), Vec3{0, 0, 1}, o);
   const Audit& r = rounding.test.audit;
@@ -320,11 +327,7 @@ TEST(PerSampleTolerance, RoundingThroughAnIllConditionedFormulaReadsApartFromABu
 // angle, reports/peers/mitsuba3-bsdfs.md, finding 2); the same weight against an albedo that
 // does not climb is beyond it.
 TEST(PerSampleTolerance, RoundingOfTheIncidentDirectionReadsApartFromABug) {
-  BsdfCheckOptions o;
-  o.name = "tolerance albedo of wi";
-  o.significance = kLevel;
-  o.samples = kSamples;
-  o.checkReciprocity = false;  // eval(wo, wi) reads wo.x as the incident direction
+  const BsdfCheckOptions o = withoutReciprocity("albedo of wi");
   const double t = 40 * std::numbers::pi / 180;
   const Vec3 wi{std::sin(t), 0, std::cos(t)};
   const CheckResult rounding = checkBsdf(albedoOfWi(AlbedoOfWi::SteepInFloat, wi.x), wi, o);
@@ -342,11 +345,7 @@ TEST(PerSampleTolerance, RoundingOfTheIncidentDirectionReadsApartFromABug) {
 }
 
 TEST(PerSampleTolerance, RoundingThatLowersTheReferenceExplainsARatioAboveOne) {
-  BsdfCheckOptions o;
-  o.name = "tolerance ring off the float grid";
-  o.significance = kLevel;
-  o.samples = kSamples;
-  o.checkReciprocity = false;  // eval does not depend on wi
+  const BsdfCheckOptions o = withoutReciprocity("ring off the float grid");
   const CheckResult r = checkBsdf(ringOffTheFloatGrid(), Vec3{0, 0, 1}, o);
   const Audit& a = r.test.audit;
   EXPECT_GT(a.count(Defect::SamplePdf), kSamples / 10) << failed(r);
