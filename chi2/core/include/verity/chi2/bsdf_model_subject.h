@@ -97,10 +97,10 @@ class BsdfModelSubject : public Subject {
   // magnitude), all three at once and one at a time with the direction kept unit, and over
   // directions near wi moved all three at once. How far, as a factor either way, rounding the
   // directions moves the reference q of a failed comparison (deviationWithinFactor turns it
-  // into the bound Audit::record takes). A factor either way:
-  // where the reference sits at a peak that rounding missed (a half vector whose cancelled
-  // component rests on the last bit of wo), every move lowers it further, and it may as well
-  // lie that far below the value an exact evaluation gives.
+  // into the bound Audit::record takes). A factor either way: where the reference sits at a
+  // peak that rounding missed (a half vector whose cancelled component rests on the last bit of
+  // wo), every move lowers it further, and it may as well lie that far below the value an exact
+  // evaluation gives.
   template <class Q>
   double roundingSpread(const Vector3d& wo, Q&& q) const;
   // "component c " where the BSDF has several, for an example.
