@@ -7,8 +7,8 @@
 // reference there (the reference's condition: a microfacet density from 1 − cos²θ near the
 // normal, a Fresnel factor at its critical angle), and one beyond that is "beyond rounding".
 // Measuring that costs 17 to 23 more evaluations (twice that for reciprocity, whose two sides
-// are both measured), so a caller classifies the first few of each
-// audit and every new worst (classifies()), not all of a BSDF that fails everywhere.
+// are both measured), so a caller classifies the first few of each audit and every new worst
+// (classifies()), not all of a BSDF that fails everywhere.
 #pragma once
 
 #include <array>
