@@ -14,6 +14,8 @@ TriangleMesh::TriangleMesh(MeshData data) : data_(std::move(data)) {
     areas[i] = std::isfinite(area) ? area : 0.0;
   }
   areas_ = Distribution1D(areas);
+  faceNormals_.resize(primitiveCount());
+  for (size_t i = 0; i < faceNormals_.size(); ++i) faceNormals_[i] = computeFaceNormal(i);
 }
 
 unsigned TriangleMesh::attach(RTCDevice device, RTCScene scene) const {
@@ -36,7 +38,7 @@ Vector3f TriangleMesh::pointError(size_t tri) const {
                          data_.positions[data_.indices[3 * tri + 2]].cwiseAbs());
 }
 
-Normal3f TriangleMesh::faceNormal(size_t tri) const {
+Normal3f TriangleMesh::computeFaceNormal(size_t tri) const {
   const Point3f& a = data_.positions[data_.indices[3 * tri]];
   const Point3f& b = data_.positions[data_.indices[3 * tri + 1]];
   const Point3f& c = data_.positions[data_.indices[3 * tri + 2]];
@@ -62,7 +64,7 @@ void TriangleMesh::completeHit(const Ray&, const RTCHit& hit, float, SurfaceInte
   // Interpolating the vertices keeps the point's error relative to the triangle's size.
   si.p = b0 * data_.positions[i0] + b1 * data_.positions[i1] + b2 * data_.positions[i2];
   si.pError = pointError(tri);
-  si.ng = faceNormal(tri);
+  si.ng = faceNormals_[tri];
   si.uv = data_.uvs.empty() ? Point2f(b1, b2)
                             : Point2f(b0 * data_.uvs[i0] + b1 * data_.uvs[i1] + b2 * data_.uvs[i2]);
   Normal3f ns = si.ng;
@@ -88,7 +90,7 @@ double TriangleMesh::solidAngleEstimate(const Point3f& ref) const {
     const Point3f& b = data_.positions[data_.indices[3 * tri + 1]];
     const Point3f& c = data_.positions[data_.indices[3 * tri + 2]];
     const double area = areas_.pmf(tri) * areas_.total();
-    if (area > 0) sum += planarSolidAngleEstimate(area, (a + b + c) / 3, faceNormal(tri), ref);
+    if (area > 0) sum += planarSolidAngleEstimate(area, (a + b + c) / 3, faceNormals_[tri], ref);
   }
   return std::min(2 * double{kPi}, sum);
 }
@@ -100,7 +102,7 @@ ShapeSample TriangleMesh::sampleArea(const Point2f& u) const {
   const Point3f& a = data_.positions[data_.indices[3 * tri]];
   const Point3f& p1 = data_.positions[data_.indices[3 * tri + 1]];
   const Point3f& p2 = data_.positions[data_.indices[3 * tri + 2]];
-  return {b.x() * a + b.y() * p1 + (1 - b.x() - b.y()) * p2, faceNormal(tri), pointError(tri),
+  return {b.x() * a + b.y() * p1 + (1 - b.x() - b.y()) * p2, faceNormals_[tri], pointError(tri),
           1.0f / area()};
 }
 

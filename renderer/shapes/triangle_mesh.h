@@ -34,11 +34,15 @@ class TriangleMesh : public Shape {
   const MeshData& data() const { return data_; }
 
  private:
-  Normal3f faceNormal(size_t tri) const;
+  // The unit geometric normal, on the side of the vertex normals where there are any.
+  Normal3f computeFaceNormal(size_t tri) const;
   Vector3f pointError(size_t tri) const;
 
   MeshData data_;
   Distribution1D areas_;
+  // computeFaceNormal of each triangle, computed once: every hit and every sampled point on an
+  // emitting mesh reads it (12 bytes a triangle).
+  std::vector<Normal3f> faceNormals_;
 };
 
 // The scene format's "mesh" (an OBJ file) and "triangle" (triangle_mesh_types.cpp).
