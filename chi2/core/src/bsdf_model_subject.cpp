@@ -189,8 +189,10 @@ double BsdfModelSubject::roundingSpread(const Vector3d& wo, Q&& q) const {
     spread = std::max(spread, factorDeviation(q(i, o), reference));
   };
   Vector3d step, stepI;
-  for (int k = 0; k < 3; ++k) step[k] = roundingOf(wo[k], setup_.directionRounding);
-  for (int k = 0; k < 3; ++k) stepI[k] = roundingOf(wi[k], setup_.directionRounding);
+  for (int k = 0; k < 3; ++k) {
+    step[k] = roundingOf(wo[k], setup_.directionRounding);
+    stepI[k] = roundingOf(wi[k], setup_.directionRounding);
+  }
   // Every component moved by its rounding, not renormalised: a direction rounded to float is
   // unit only to its rounding. wi too: a quantity of wi alone (a lobe's probability, a
   // Fresnel factor at a critical angle) rounds as much as one of wo.

@@ -315,12 +315,6 @@ TEST(PerSampleTolerance, RoundingThroughAnIllConditionedFormulaReadsApartFromABu
   EXPECT_FALSE(b.onlyRounding());
 }
 
-// Rounding that lowers a reference explains a ratio above 1 as well as one below: pdf() read at
-// cos θo rounded off a narrow ring's peak is up to 7.4 times below the sample's exact density,
-// and every move of wo by its rounding lowers it further. Measured as |ratio − 1| those moves
-// reached no more than 1 (a reference lowered to nothing), so every ratio above 2 was called
-// beyond rounding (Mitsuba 3's GGX at exactly 90°, whose half vector rests on the last bit of
-// wo.x, read so: reports/peers/mitsuba3-bsdfs.md, finding 4).
 // A quantity of wi alone rounds as much as one of wo: a weight 1.4 times eval·|cos|/pdf where
 // the albedo climbs 40% per float step of wi.x is within what rounding wi gives there (moving
 // wo alone does not change it: Mitsuba 3's and pbrt-v4's conductors of k = 0 at the critical
@@ -344,6 +338,12 @@ TEST(PerSampleTolerance, RoundingOfTheIncidentDirectionReadsApartFromABug) {
   EXPECT_EQ(b.beyondRounding(Defect::Weight), b.classified(Defect::Weight)) << failed(bug);
 }
 
+// Rounding that lowers a reference explains a ratio above 1 as well as one below: pdf() read at
+// cos θo rounded off a narrow ring's peak is up to 7.4 times below the sample's exact density,
+// and every move of wo by its rounding lowers it further. Measured as |ratio − 1| those moves
+// reached no more than 1 (a reference lowered to nothing), so every ratio above 2 was called
+// beyond rounding (Mitsuba 3's GGX at exactly 90°, whose half vector rests on the last bit of
+// wo.x, read so: reports/peers/mitsuba3-bsdfs.md, finding 4).
 TEST(PerSampleTolerance, RoundingThatLowersTheReferenceExplainsARatioAboveOne) {
   const BsdfCheckOptions o = withoutReciprocity("ring off the float grid");
   const CheckResult r = checkBsdf(ringOffTheFloatGrid(), Vec3{0, 0, 1}, o);
