@@ -38,7 +38,9 @@ namespace verity::chi2 {
 template <class V, class Value>
 struct SampledF {
   V wi{};
-  Value f{};
+  // No default: a value type need not have a default constructor (clang refuses `f{}` for
+  // one even where every SampledF is built from its values).
+  Value f;
   double pdf = 0;
   bool delta = false;
 };
