@@ -79,12 +79,13 @@ TEST_F(ProcessRender, DecidesLikeTheSameRoundsInTheProcess) {
   options.seed = 1000;
   // Pixels of sd 0.1 rather than the fake's 0.25: equal sides decide in three rounds (16
   // renders a side) rather than six (128), still through rounds that double.
-  const std::string quiet = " --noise 0.1";
+  testing::FakeScene a;
+  a.noise = 0.1;
+  const std::string quiet = " --noise " + std::to_string(a.noise);
   for (double bias : {0.0, 0.1}) {
     ProcessRenderSource processes({fake(quiet), fake(quiet + " --bias " + std::to_string(bias))}, 4,
                                   dir_, std::nullopt);
-    testing::FakeScene a, b;
-    a.noise = b.noise = 0.1;
+    testing::FakeScene b = a;
     b.bias = bias;
     testing::FakeRenderSource memory(a, b);
     const RefereeResult viaProcesses = referee(processes, options);
